@@ -1,0 +1,1 @@
+//! Properties of this family (filled in by its issue).

@@ -1,0 +1,139 @@
+//! `plc-timers`: runs traces through the reference semantics, checks other implementations'
+//! outputs, and converts time literals. The contract is `shared/trace-format.md`.
+
+use std::fs::File;
+use std::io::{self, Read};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+use plc_timers::trace::{self, BlockOptions, Implementation, PresetOption, TraceError};
+
+/// Siemens S7 timers and counters: reference semantics for traces.
+#[derive(Parser, Debug)]
+#[command(name = "plc-timers", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run a CSV trace through a block's reference semantics; write the trace with its outputs.
+    Run(BlockArgs),
+    /// Compare a trace that carries outputs (another implementation's) with the reference;
+    /// exit status 1 at the first difference.
+    Check(BlockArgs),
+}
+
+#[derive(Args, Debug)]
+struct BlockArgs {
+    /// The block: S_PULSE S_PEXT S_ODT S_ODTS S_OFFDT (SP SE SD SS SF), TP TON TOF TONR,
+    /// CTU CTD CTUD, S_CU S_CD S_CUD (case-insensitive).
+    block: String,
+    /// The trace (CSV); standard input when absent or `-`.
+    file: Option<PathBuf>,
+    /// S5 timers: the time value TV used when the trace has no TV column (S5T#…, S5TIME#…, W#16#…).
+    #[arg(long, allow_hyphen_values = true)]
+    tv: Option<String>,
+    /// IEC timers: the preset PT used when the trace has no PT column (T#…, TIME#…, or ms).
+    #[arg(long, allow_hyphen_values = true)]
+    pt: Option<String>,
+    /// Counters: the preset PV used when the trace has no PV column.
+    #[arg(long, allow_hyphen_values = true)]
+    pv: Option<String>,
+    /// IEC counters: the integer type of CV and PV: SINT INT DINT LINT USINT UINT UDINT ULINT.
+    #[arg(long = "type")]
+    int_type: Option<String>,
+    /// Drive the optimized implementation instead of the reference (for comparison).
+    #[arg(long)]
+    optimized: bool,
+}
+
+impl BlockArgs {
+    fn presets(&self) -> Vec<PresetOption<'_>> {
+        [("tv", &self.tv), ("pt", &self.pt), ("pv", &self.pv)]
+            .into_iter()
+            .filter_map(|(name, value)| value.as_deref().map(|v| (name, v)))
+            .collect()
+    }
+
+    fn input(&self) -> Result<Box<dyn Read>, TraceError> {
+        match &self.file {
+            None => Ok(Box::new(io::stdin().lock())),
+            Some(p) if p.as_os_str() == "-" => Ok(Box::new(io::stdin().lock())),
+            Some(p) => File::open(p).map(|f| Box::new(f) as Box<dyn Read>).map_err(|e| TraceError {
+                location: trace::Location::Command,
+                message: format!("cannot open {}: {e}", p.display()),
+            }),
+        }
+    }
+
+    fn block(&self) -> Result<Box<dyn trace::TraceBlock>, TraceError> {
+        let options = BlockOptions {
+            int_type: self.int_type.clone(),
+            implementation: if self.optimized {
+                Implementation::Optimized
+            } else {
+                Implementation::Reference
+            },
+        };
+        trace::lookup(&self.block, &options)
+    }
+}
+
+/// Exit status for bad input, per the contract.
+const BAD_INPUT: u8 = 2;
+
+fn fail(e: impl std::fmt::Display) -> ExitCode {
+    eprintln!("plc-timers: {e}");
+    ExitCode::from(BAD_INPUT)
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let code = if e.use_stderr() { BAD_INPUT } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match cli.command {
+        Command::Run(args) => {
+            let result = args.block().and_then(|mut block| {
+                let stdout = io::stdout().lock();
+                trace::run(block.as_mut(), args.input()?, &args.presets(), stdout)
+            });
+            match result {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => fail(e),
+            }
+        }
+        Command::Check(args) => {
+            let result = args
+                .block()
+                .and_then(|mut block| trace::check(block.as_mut(), args.input()?, &args.presets()));
+            match result {
+                Ok(report) => match report.difference {
+                    None => {
+                        println!(
+                            "OK: {} rows, outputs {} agree with the reference",
+                            report.rows,
+                            report.compared.join(", ")
+                        );
+                        ExitCode::SUCCESS
+                    }
+                    Some(d) => {
+                        println!(
+                            "DIFFERENT at line {}, column {} ({}): the reference gives {}, the trace has {}",
+                            d.line, d.column, d.name, d.expected, d.found
+                        );
+                        ExitCode::from(1)
+                    }
+                },
+                Err(e) => fail(e),
+            }
+        }
+    }
+}

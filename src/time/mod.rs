@@ -1,0 +1,11 @@
+//! Time formats: the S5TIME word of S7-300/400 and IEC `TIME` of S7-1200/1500.
+//!
+//! - [`S5Time`] and [`TimeBase`]: the 16-bit word with three BCD digits and a time base
+//!   (seed 000 §9.1, seed 003 §7).
+//! - [`Time`]: signed 32-bit milliseconds with `T#…` literals (seed 001).
+
+mod s5time;
+mod time;
+
+pub use s5time::{S5Time, S5TimeError, TimeBase};
+pub use time::Time;

@@ -1,0 +1,191 @@
+//! The S5TIME word (seed 000 §9.1, seed 003 §7).
+//!
+//! ```text
+//!  15 14 | 13 12 | 11 .. 8 | 7 .. 4 | 3 .. 0
+//!  ignored| base  | hundreds|  tens  |  ones      (three BCD digits, 0..=999 units)
+//! ```
+
+use core::fmt;
+
+/// The time base of an S5 timer: the interval after which the operating system decrements the
+/// timer value by one unit (seed 000 §9.1, Table 9-1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[repr(u8)]
+pub enum TimeBase {
+    /// 10 ms, bits 13-12 = `00`.
+    Ms10 = 0,
+    /// 100 ms, bits 13-12 = `01`.
+    Ms100 = 1,
+    /// 1 s, bits 13-12 = `10`.
+    S1 = 2,
+    /// 10 s, bits 13-12 = `11`.
+    S10 = 3,
+}
+
+impl TimeBase {
+    /// All four bases, finest first.
+    pub const ALL: [TimeBase; 4] = [TimeBase::Ms10, TimeBase::Ms100, TimeBase::S1, TimeBase::S10];
+
+    /// The base encoded by the two low bits of `bits` (the word's bits 13-12 shifted down).
+    pub const fn from_bits(bits: u8) -> TimeBase {
+        match bits & 0b11 {
+            0 => TimeBase::Ms10,
+            1 => TimeBase::Ms100,
+            2 => TimeBase::S1,
+            _ => TimeBase::S10,
+        }
+    }
+
+    /// The two-bit code of this base (Table 9-1).
+    pub const fn bits(self) -> u8 {
+        self as u8
+    }
+
+    /// The length of one unit of this base in milliseconds.
+    pub const fn millis(self) -> u32 {
+        match self {
+            TimeBase::Ms10 => 10,
+            TimeBase::Ms100 => 100,
+            TimeBase::S1 => 1_000,
+            TimeBase::S10 => 10_000,
+        }
+    }
+}
+
+/// What was wrong with an S5TIME value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum S5TimeError {
+    /// A BCD digit of the word's value field is above 9.
+    BcdDigit {
+        /// The word as given.
+        word: u16,
+        /// Which digit: 0 = ones (bits 3-0), 1 = tens (bits 7-4), 2 = hundreds (bits 11-8).
+        position: u8,
+        /// The digit's value, 10..=15.
+        digit: u8,
+    },
+    /// A unit count above 999.
+    UnitsOutOfRange {
+        /// The count given.
+        units: u16,
+    },
+    /// A duration above 9 990 s (`S5T#2H_46M_30S`), the largest an S5TIME can hold.
+    DurationOutOfRange {
+        /// The duration given, in milliseconds.
+        millis: u64,
+    },
+}
+
+impl fmt::Display for S5TimeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            S5TimeError::BcdDigit { word, position, digit } => {
+                let name = ["ones", "tens", "hundreds"][position as usize % 3];
+                write!(
+                    f,
+                    "W#16#{word:04X} is not a valid S5TIME: its {name} BCD digit is {digit:X}, \
+                     digits must be 0-9"
+                )
+            }
+            S5TimeError::UnitsOutOfRange { units } => {
+                write!(f, "{units} time units do not fit in S5TIME: the value is 0..=999 units")
+            }
+            S5TimeError::DurationOutOfRange { millis } => write!(
+                f,
+                "{millis} ms is above the S5TIME maximum of 9 990 000 ms (S5T#2H_46M_30S)"
+            ),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for S5TimeError {}
+
+/// A valid S5TIME: 0..=999 units of a [`TimeBase`].
+///
+/// The invariant `units <= 999` holds for every value of this type; constructors check it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct S5Time {
+    units: u16,
+    base: TimeBase,
+}
+
+/// Encodes 0..=999 as three BCD digits. Callers guarantee `v <= 999`.
+pub(crate) const fn bcd3_encode(v: u16) -> u16 {
+    (v / 100) << 8 | (v / 10 % 10) << 4 | (v % 10)
+}
+
+impl S5Time {
+    /// Zero: `W#16#0000`.
+    pub const ZERO: S5Time = S5Time { units: 0, base: TimeBase::Ms10 };
+    /// The largest S5TIME: 999 x 10 s = 9 990 s, `W#16#3999`.
+    pub const MAX: S5Time = S5Time { units: 999, base: TimeBase::S10 };
+    /// The largest duration in milliseconds, 9 990 000.
+    pub const MAX_MILLIS: u32 = 9_990_000;
+
+    /// `units` (0..=999) of `base`.
+    pub const fn new(units: u16, base: TimeBase) -> Result<S5Time, S5TimeError> {
+        if units > 999 {
+            return Err(S5TimeError::UnitsOutOfRange { units });
+        }
+        Ok(S5Time { units, base })
+    }
+
+    /// Decodes a word: bits 11-0 three BCD digits (each checked), bits 13-12 the base, bits 15-14
+    /// ignored (seed 000 §9.1; semantics brief §1).
+    pub const fn from_word(word: u16) -> Result<S5Time, S5TimeError> {
+        let mut units = 0u16;
+        let mut position = 3u8;
+        while position > 0 {
+            position -= 1;
+            let digit = ((word >> (4 * position)) & 0xF) as u8;
+            if digit > 9 {
+                return Err(S5TimeError::BcdDigit { word, position, digit });
+            }
+            units = units * 10 + digit as u16;
+        }
+        Ok(S5Time { units, base: TimeBase::from_bits((word >> 12) as u8) })
+    }
+
+    /// The word: BCD value in bits 11-0, base in bits 13-12, bits 15-14 zero.
+    pub const fn to_word(self) -> u16 {
+        (self.base.bits() as u16) << 12 | bcd3_encode(self.units)
+    }
+
+    /// The number of time-base units, 0..=999.
+    pub const fn units(self) -> u16 {
+        self.units
+    }
+
+    /// The time base.
+    pub const fn base(self) -> TimeBase {
+        self.base
+    }
+
+    /// The duration in milliseconds: `units x base`, at most 9 990 000.
+    pub const fn as_millis(self) -> u32 {
+        self.units as u32 * self.base.millis()
+    }
+
+    /// The S5TIME for a duration, as `S5T#` literals are encoded (seed 000 §9.1): the finest base
+    /// whose value, rounded **down** to that base, fits in 999 units; the value rounded down.
+    ///
+    /// Errors above 9 990 000 ms rather than clamping.
+    pub const fn from_millis(millis: u64) -> Result<S5Time, S5TimeError> {
+        if millis > S5Time::MAX_MILLIS as u64 {
+            return Err(S5TimeError::DurationOutOfRange { millis });
+        }
+        let mut i = 0;
+        while i < TimeBase::ALL.len() {
+            let base = TimeBase::ALL[i];
+            let units = millis / base.millis() as u64;
+            if units <= 999 {
+                return Ok(S5Time { units: units as u16, base });
+            }
+            i += 1;
+        }
+        // Unreachable: 9 990 000 / 10 000 = 999 fits the coarsest base.
+        Err(S5TimeError::DurationOutOfRange { millis })
+    }
+}

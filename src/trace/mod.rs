@@ -1,0 +1,18 @@
+//! CSV traces (feature `cli`): the command-line contract of `shared/trace-format.md`.
+//!
+//! - [`block`]: the [`TraceBlock`] interface each family implements.
+//! - [`registry`]: block names, aliases and options.
+//! - [`runner`]: [`run`] (reference outputs for a trace) and [`check`] (compare another
+//!   implementation's outputs with the reference).
+//! - [`error`]: errors that name the line and column.
+
+pub mod block;
+mod blocks;
+pub mod error;
+pub mod registry;
+pub mod runner;
+
+pub use block::{CellError, Implementation, Input, InputKind, Row, TraceBlock, Value};
+pub use error::{Location, TraceError};
+pub use registry::{lookup, BlockOptions, BLOCK_NAMES};
+pub use runner::{check, run, CheckReport, Difference, PresetOption};
