@@ -62,10 +62,12 @@ impl BlockArgs {
         match &self.file {
             None => Ok(Box::new(io::stdin().lock())),
             Some(p) if p.as_os_str() == "-" => Ok(Box::new(io::stdin().lock())),
-            Some(p) => File::open(p).map(|f| Box::new(f) as Box<dyn Read>).map_err(|e| TraceError {
-                location: trace::Location::Command,
-                message: format!("cannot open {}: {e}", p.display()),
-            }),
+            Some(p) => File::open(p)
+                .map(|f| Box::new(f) as Box<dyn Read>)
+                .map_err(|e| TraceError {
+                    location: trace::Location::Command,
+                    message: format!("cannot open {}: {e}", p.display()),
+                }),
         }
     }
 

@@ -7,6 +7,9 @@
 
 use core::fmt;
 
+use super::literal::{parse_components, strip_prefix_ci, write_components};
+use super::literal::{LiteralError, LiteralErrorKind};
+
 /// The time base of an S5 timer: the interval after which the operating system decrements the
 /// timer value by one unit (seed 000 §9.1, Table 9-1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -80,7 +83,11 @@ pub enum S5TimeError {
 impl fmt::Display for S5TimeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            S5TimeError::BcdDigit { word, position, digit } => {
+            S5TimeError::BcdDigit {
+                word,
+                position,
+                digit,
+            } => {
                 let name = ["ones", "tens", "hundreds"][position as usize % 3];
                 write!(
                     f,
@@ -89,7 +96,10 @@ impl fmt::Display for S5TimeError {
                 )
             }
             S5TimeError::UnitsOutOfRange { units } => {
-                write!(f, "{units} time units do not fit in S5TIME: the value is 0..=999 units")
+                write!(
+                    f,
+                    "{units} time units do not fit in S5TIME: the value is 0..=999 units"
+                )
             }
             S5TimeError::DurationOutOfRange { millis } => write!(
                 f,
@@ -118,9 +128,15 @@ pub(crate) const fn bcd3_encode(v: u16) -> u16 {
 
 impl S5Time {
     /// Zero: `W#16#0000`.
-    pub const ZERO: S5Time = S5Time { units: 0, base: TimeBase::Ms10 };
+    pub const ZERO: S5Time = S5Time {
+        units: 0,
+        base: TimeBase::Ms10,
+    };
     /// The largest S5TIME: 999 x 10 s = 9 990 s, `W#16#3999`.
-    pub const MAX: S5Time = S5Time { units: 999, base: TimeBase::S10 };
+    pub const MAX: S5Time = S5Time {
+        units: 999,
+        base: TimeBase::S10,
+    };
     /// The largest duration in milliseconds, 9 990 000.
     pub const MAX_MILLIS: u32 = 9_990_000;
 
@@ -141,11 +157,18 @@ impl S5Time {
             position -= 1;
             let digit = ((word >> (4 * position)) & 0xF) as u8;
             if digit > 9 {
-                return Err(S5TimeError::BcdDigit { word, position, digit });
+                return Err(S5TimeError::BcdDigit {
+                    word,
+                    position,
+                    digit,
+                });
             }
             units = units * 10 + digit as u16;
         }
-        Ok(S5Time { units, base: TimeBase::from_bits((word >> 12) as u8) })
+        Ok(S5Time {
+            units,
+            base: TimeBase::from_bits((word >> 12) as u8),
+        })
     }
 
     /// The word: BCD value in bits 11-0, base in bits 13-12, bits 15-14 zero.
@@ -181,11 +204,80 @@ impl S5Time {
             let base = TimeBase::ALL[i];
             let units = millis / base.millis() as u64;
             if units <= 999 {
-                return Ok(S5Time { units: units as u16, base });
+                return Ok(S5Time {
+                    units: units as u16,
+                    base,
+                });
             }
             i += 1;
         }
         // Unreachable: 9 990 000 / 10 000 = 999 fits the coarsest base.
         Err(S5TimeError::DurationOutOfRange { millis })
+    }
+}
+
+impl core::str::FromStr for S5Time {
+    type Err = LiteralError;
+
+    /// Parses `S5T#aH_bbM_ccS_dddMS`, `S5TIME#…` (case-insensitive, underscores optional, units
+    /// from largest to smallest, each at most once; the first may exceed its usual range, as in
+    /// `S5T#120S`) with the automatic base and rounding down, or `W#16#wxyz` (BCD checked, bits
+    /// 15-14 ignored).
+    ///
+    /// ```
+    /// use plc_timers::time::{S5Time, TimeBase};
+    /// let t: S5Time = "S5T#2M7S".parse()?;
+    /// assert_eq!((t.units(), t.base()), (127, TimeBase::S1));
+    /// assert_eq!(t.to_word(), 0x2127);
+    /// assert!("W#16#20A1".parse::<S5Time>().is_err()); // BCD digit A
+    /// # Ok::<(), plc_timers::time::LiteralError>(())
+    /// ```
+    fn from_str(text: &str) -> Result<S5Time, LiteralError> {
+        const WHAT: &str = "S5TIME";
+        let err = |position, kind| LiteralError {
+            what: WHAT,
+            position,
+            kind,
+        };
+        if text.is_empty() {
+            return Err(err(0, LiteralErrorKind::Empty));
+        }
+        if let Some(hex) = strip_prefix_ci(text, "W#16#") {
+            let offset = text.len() - hex.len();
+            if hex.is_empty() || hex.len() > 4 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+                return Err(err(offset, LiteralErrorKind::HexDigits));
+            }
+            let word = u16::from_str_radix(hex, 16)
+                .map_err(|_| err(offset, LiteralErrorKind::HexDigits))?;
+            return S5Time::from_word(word).map_err(|e| match e {
+                S5TimeError::BcdDigit {
+                    position, digit, ..
+                } => err(
+                    // The digit's byte in the text: the last hex char is the ones digit.
+                    (offset + hex.len()).saturating_sub(1 + position as usize),
+                    LiteralErrorKind::BcdDigit(digit),
+                ),
+                _ => err(offset, LiteralErrorKind::OutOfRange),
+            });
+        }
+        let body = strip_prefix_ci(text, "S5TIME#")
+            .or_else(|| strip_prefix_ci(text, "S5T#"))
+            .ok_or(err(0, LiteralErrorKind::Prefix))?;
+        let offset = text.len() - body.len();
+        if body.starts_with('-') {
+            return Err(err(offset, LiteralErrorKind::OutOfRange));
+        }
+        let millis = parse_components(WHAT, body, offset, false)?;
+        S5Time::from_millis(millis).map_err(|_| err(offset, LiteralErrorKind::OutOfRange))
+    }
+}
+
+impl fmt::Display for S5Time {
+    /// The canonical literal: `S5T#` and the duration without underscores, zero units omitted
+    /// (`S5T#2M7S`, `S5T#10MS`, `S5T#0MS`). The base is not shown: parsing the literal gives the
+    /// automatic base, which may differ from this value's base for the same duration.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("S5T#")?;
+        write_components(f, u64::from(self.as_millis()), false, "")
     }
 }

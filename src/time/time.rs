@@ -1,5 +1,8 @@
 //! IEC `TIME`: a signed 32-bit count of milliseconds (seed 001, Table 8-21).
 
+use super::literal::{parse_components, strip_prefix_ci, write_components};
+use super::literal::{LiteralError, LiteralErrorKind};
+
 /// IEC `TIME`: signed 32-bit milliseconds, `T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Time(i32);
@@ -21,4 +24,115 @@ impl Time {
     pub const fn as_millis(self) -> i32 {
         self.0
     }
+}
+
+impl Time {
+    /// The `TIME` of `millis` ms, or `None` outside the 32-bit range.
+    pub const fn from_millis_i64(millis: i64) -> Option<Time> {
+        if millis < i32::MIN as i64 || millis > i32::MAX as i64 {
+            None
+        } else {
+            Some(Time(millis as i32))
+        }
+    }
+
+    /// The preset as a timer instruction uses it: a negative `PT` is taken as 0 (seed 001,
+    /// Table 8-21 note 1).
+    pub const fn clamp_negative(self) -> u32 {
+        if self.0 < 0 {
+            0
+        } else {
+            self.0 as u32
+        }
+    }
+}
+
+impl core::str::FromStr for Time {
+    type Err = LiteralError;
+
+    /// Parses `T#…` or `TIME#…` (case-insensitive, underscores optional, an optional `-` after
+    /// `#`, units D, H, M, S, MS from largest to smallest, each at most once; the first may exceed
+    /// its usual range, as in `T#90M`), or a plain whole number of milliseconds (seed 001: "T#200ms
+    /// or 200"). The range is checked exactly.
+    ///
+    /// ```
+    /// use plc_timers::time::Time;
+    /// assert_eq!("T#2s_200ms".parse::<Time>()?.as_millis(), 2200);
+    /// assert_eq!("200".parse::<Time>()?.as_millis(), 200);
+    /// assert_eq!("T#-24D_20H_31M_23S_648MS".parse::<Time>()?, Time::MIN);
+    /// assert!("T#24D_20H_31M_23S_648MS".parse::<Time>().is_err());
+    /// # Ok::<(), plc_timers::time::LiteralError>(())
+    /// ```
+    fn from_str(text: &str) -> Result<Time, LiteralError> {
+        const WHAT: &str = "TIME";
+        let err = |position, kind| LiteralError {
+            what: WHAT,
+            position,
+            kind,
+        };
+        if text.is_empty() {
+            return Err(err(0, LiteralErrorKind::Empty));
+        }
+        let (negative, magnitude) =
+            match strip_prefix_ci(text, "TIME#").or_else(|| strip_prefix_ci(text, "T#")) {
+                Some(body) => {
+                    let (negative, rest) = match body.strip_prefix('-') {
+                        Some(rest) => (true, rest),
+                        None => (false, body),
+                    };
+                    (
+                        negative,
+                        parse_components(WHAT, rest, text.len() - rest.len(), true)?,
+                    )
+                }
+                None => parse_plain_millis(text)?,
+            };
+        // Any magnitude above 2^31 is out of range; capping keeps the sign change exact.
+        let capped = magnitude.min(1 << 40) as i64;
+        let signed = if negative { -capped } else { capped };
+        Time::from_millis_i64(signed).ok_or(err(0, LiteralErrorKind::OutOfRange))
+    }
+}
+
+impl core::fmt::Display for Time {
+    /// `T#` and the components, upper case, separated by `_`, zero components omitted:
+    /// `T#2S_200MS`, `T#0MS`, `T#-24D_20H_31M_23S_648MS`.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(if self.0 < 0 { "T#-" } else { "T#" })?;
+        write_components(f, u64::from(self.0.unsigned_abs()), true, "_")
+    }
+}
+
+/// A plain whole number of milliseconds with an optional sign: (negative, magnitude).
+fn parse_plain_millis(text: &str) -> Result<(bool, u64), LiteralError> {
+    let err = |position, kind| LiteralError {
+        what: "TIME",
+        position,
+        kind,
+    };
+    let (negative, digits) = match text.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, text.strip_prefix('+').unwrap_or(text)),
+    };
+    let offset = text.len() - digits.len();
+    if digits.is_empty() {
+        return Err(err(offset, LiteralErrorKind::MissingDigits));
+    }
+    let mut value: u64 = 0;
+    for (i, c) in digits.char_indices() {
+        let Some(d) = c.to_digit(10) else {
+            // A letter first means a missing or unknown prefix (`X#5S`, `5S` without `T#`).
+            let kind = if c.is_ascii_alphabetic() && i == 0 {
+                LiteralErrorKind::Prefix
+            } else {
+                LiteralErrorKind::UnexpectedChar(c)
+            };
+            return Err(err(offset + i, kind));
+        };
+        value = value
+            .checked_mul(10)
+            .and_then(|v| v.checked_add(u64::from(d)))
+            .ok_or(err(offset, LiteralErrorKind::Overflow))?;
+    }
+    Ok((negative, value))
 }

@@ -29,12 +29,18 @@ pub struct Input {
 impl Input {
     /// A boolean input column.
     pub const fn bool(name: &'static str) -> Input {
-        Input { name, kind: InputKind::Bool }
+        Input {
+            name,
+            kind: InputKind::Bool,
+        }
     }
 
     /// A preset input column with its command-line option.
     pub const fn preset(name: &'static str, option: &'static str) -> Input {
-        Input { name, kind: InputKind::Preset { option } }
+        Input {
+            name,
+            kind: InputKind::Preset { option },
+        }
     }
 }
 

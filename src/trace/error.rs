@@ -34,7 +34,10 @@ pub struct TraceError {
 
 impl TraceError {
     pub(crate) fn new(location: Location, message: impl Into<String>) -> TraceError {
-        TraceError { location, message: message.into() }
+        TraceError {
+            location,
+            message: message.into(),
+        }
     }
 }
 

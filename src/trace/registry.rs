@@ -35,14 +35,20 @@ pub fn lookup(name: &str, options: &BlockOptions) -> Result<Box<dyn TraceBlock>,
         None => {
             return Err(TraceError::new(
                 Location::Command,
-                format!("unknown block `{name}`; known blocks: {}", BLOCK_NAMES.join(", ")),
+                format!(
+                    "unknown block `{name}`; known blocks: {}",
+                    BLOCK_NAMES.join(", ")
+                ),
             ))
         }
     };
     if options.int_type.is_some() && !matches!(block.name(), "CTU" | "CTD" | "CTUD") {
         return Err(TraceError::new(
             Location::Option("type"),
-            format!("--type applies to CTU, CTD and CTUD only, not to {}", block.name()),
+            format!(
+                "--type applies to CTU, CTD and CTUD only, not to {}",
+                block.name()
+            ),
         ));
     }
     Ok(block)

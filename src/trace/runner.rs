@@ -67,7 +67,9 @@ fn csv_error(e: csv::Error) -> TraceError {
         _ => e.position().map(csv::Position::line),
     };
     let message = match e.kind() {
-        csv::ErrorKind::UnequalLengths { expected_len, len, .. } => {
+        csv::ErrorKind::UnequalLengths {
+            expected_len, len, ..
+        } => {
             format!("the row has {len} fields but the header has {expected_len}")
         }
         csv::ErrorKind::Utf8 { .. } => "the row is not valid UTF-8".to_string(),
@@ -106,10 +108,17 @@ fn layout(
     };
     for (index, raw) in header.iter().enumerate() {
         let name = raw.trim();
-        let cell = || Location::Cell { line, column: index + 1, name: name.to_string() };
+        let cell = || Location::Cell {
+            line,
+            column: index + 1,
+            name: name.to_string(),
+        };
         let column = if name.eq_ignore_ascii_case("t_ms") {
             Column::Time
-        } else if let Some(i) = inputs.iter().position(|c| c.name.eq_ignore_ascii_case(name)) {
+        } else if let Some(i) = inputs
+            .iter()
+            .position(|c| c.name.eq_ignore_ascii_case(name))
+        {
             Column::Input(i)
         } else if let Some(i) = outputs.iter().position(|c| c.eq_ignore_ascii_case(name)) {
             if !allow_outputs {
@@ -144,7 +153,10 @@ fn layout(
             Column::Output(i) => &mut layout.output_column[i],
         };
         if slot.is_some() {
-            return Err(TraceError::new(cell(), format!("column `{name}` appears twice")));
+            return Err(TraceError::new(
+                cell(),
+                format!("column `{name}` appears twice"),
+            ));
         }
         *slot = Some(index);
         layout.names.push(name.to_string());
@@ -153,11 +165,16 @@ fn layout(
     if block.requires_time() && layout.time_column.is_none() {
         return Err(TraceError::new(
             Location::Line(line),
-            format!("{} is a timer: the header needs a `t_ms` column", block.name()),
+            format!(
+                "{} is a timer: the header needs a `t_ms` column",
+                block.name()
+            ),
         ));
     }
     for (option, value) in presets {
-        let declared = inputs.iter().position(|c| c.kind == InputKind::Preset { option });
+        let declared = inputs
+            .iter()
+            .position(|c| c.kind == InputKind::Preset { option });
         match declared {
             Some(i) => layout.option_value[i] = Some(value.to_string()),
             None => {
@@ -209,7 +226,10 @@ fn drive<R: io::Read>(
     let mut rdr = reader(input);
     let mut record = csv::StringRecord::new();
     if !rdr.read_record(&mut record).map_err(csv_error)? {
-        return Err(TraceError::new(Location::Line(1), "the trace is empty: it needs a header row"));
+        return Err(TraceError::new(
+            Location::Line(1),
+            "the trace is empty: it needs a header row",
+        ));
     }
     let header_line = record.position().map_or(1, csv::Position::line);
     let layout = layout(block, &record, header_line, presets, allow_outputs)?;
@@ -253,7 +273,10 @@ fn drive<R: io::Read>(
                         (Some(text), Some(index)) => parse_bool(text).ok_or_else(|| {
                             TraceError::new(
                                 cell(index),
-                                format!("`{}` is not a boolean; use 0, 1, true or false", text.trim()),
+                                format!(
+                                    "`{}` is not a boolean; use 0, 1, true or false",
+                                    text.trim()
+                                ),
                             )
                         })?,
                         _ => false,
@@ -265,7 +288,12 @@ fn drive<R: io::Read>(
                 }
             }
         }
-        let row = Row { t_ms, inputs, bools: &bools, presets: &presets };
+        let row = Row {
+            t_ms,
+            inputs,
+            bools: &bools,
+            presets: &presets,
+        };
         outputs.clear();
         block.step(&row, &mut outputs).map_err(|e| {
             let i = inputs.iter().position(|c| c.name == e.input);
@@ -299,24 +327,32 @@ pub fn run<R: io::Read, W: io::Write>(
     output: W,
 ) -> Result<(), TraceError> {
     let mut wtr = csv::WriterBuilder::new().flexible(true).from_writer(output);
-    let io_error = |e: csv::Error| TraceError::new(Location::Command, format!("cannot write the output: {e}"));
+    let io_error =
+        |e: csv::Error| TraceError::new(Location::Command, format!("cannot write the output: {e}"));
     let output_names = block.outputs();
     let mut header_written = false;
     let mut fields: Vec<String> = Vec::new();
-    drive(block, input, presets, false, |layout, _line, record, values| {
-        if !header_written {
-            let mut header: Vec<&str> = layout.names.iter().map(String::as_str).collect();
-            header.extend_from_slice(output_names);
-            wtr.write_record(&header).map_err(io_error)?;
-            header_written = true;
-        }
-        fields.clear();
-        fields.extend(record.iter().map(str::to_string));
-        fields.extend(values.iter().map(Value::to_string));
-        wtr.write_record(&fields).map_err(io_error)?;
-        Ok(true)
-    })?;
-    wtr.flush().map_err(|e| TraceError::new(Location::Command, format!("cannot write the output: {e}")))
+    drive(
+        block,
+        input,
+        presets,
+        false,
+        |layout, _line, record, values| {
+            if !header_written {
+                let mut header: Vec<&str> = layout.names.iter().map(String::as_str).collect();
+                header.extend_from_slice(output_names);
+                wtr.write_record(&header).map_err(io_error)?;
+                header_written = true;
+            }
+            fields.clear();
+            fields.extend(record.iter().map(str::to_string));
+            fields.extend(values.iter().map(Value::to_string));
+            wtr.write_record(&fields).map_err(io_error)?;
+            Ok(true)
+        },
+    )?;
+    wtr.flush()
+        .map_err(|e| TraceError::new(Location::Command, format!("cannot write the output: {e}")))
 }
 
 /// Parses an output cell of another implementation in the form `expected` has.
@@ -343,38 +379,52 @@ pub fn check<R: io::Read>(
     presets: &[PresetOption<'_>],
 ) -> Result<CheckReport, TraceError> {
     let output_names = block.outputs();
-    let mut report = CheckReport { rows: 0, compared: Vec::new(), difference: None };
-    drive(block, input, presets, true, |layout, line, record, values| {
-        if report.rows == 0 {
-            report.compared = output_names
-                .iter()
-                .zip(&layout.output_column)
-                .filter(|(_, c)| c.is_some())
-                .map(|(n, _)| n.to_string())
-                .collect();
-            if report.compared.is_empty() {
-                return Err(TraceError::new(
-                    Location::Line(1),
-                    format!("no output column to check; {} writes {}", "the block", output_names.join(", ")),
-                ));
+    let mut report = CheckReport {
+        rows: 0,
+        compared: Vec::new(),
+        difference: None,
+    };
+    drive(
+        block,
+        input,
+        presets,
+        true,
+        |layout, line, record, values| {
+            if report.rows == 0 {
+                report.compared = output_names
+                    .iter()
+                    .zip(&layout.output_column)
+                    .filter(|(_, c)| c.is_some())
+                    .map(|(n, _)| n.to_string())
+                    .collect();
+                if report.compared.is_empty() {
+                    return Err(TraceError::new(
+                        Location::Line(1),
+                        format!(
+                            "no output column to check; {} writes {}",
+                            "the block",
+                            output_names.join(", ")
+                        ),
+                    ));
+                }
             }
-        }
-        report.rows += 1;
-        for (o, column) in layout.output_column.iter().enumerate() {
-            let Some(index) = *column else { continue };
-            let text = record.get(index).unwrap_or("");
-            if parse_like(values[o], text) != Some(values[o]) {
-                report.difference = Some(Difference {
-                    line,
-                    column: index + 1,
-                    name: output_names[o].to_string(),
-                    expected: values[o].to_string(),
-                    found: text.trim().to_string(),
-                });
-                return Ok(false);
+            report.rows += 1;
+            for (o, column) in layout.output_column.iter().enumerate() {
+                let Some(index) = *column else { continue };
+                let text = record.get(index).unwrap_or("");
+                if parse_like(values[o], text) != Some(values[o]) {
+                    report.difference = Some(Difference {
+                        line,
+                        column: index + 1,
+                        name: output_names[o].to_string(),
+                        expected: values[o].to_string(),
+                        found: text.trim().to_string(),
+                    });
+                    return Ok(false);
+                }
             }
-        }
-        Ok(true)
-    })?;
+            Ok(true)
+        },
+    )?;
     Ok(report)
 }

@@ -1,0 +1,184 @@
+//! Literal parsing and formatting of S5TIME and TIME, against the seeds' examples.
+
+use plc_timers::time::{LiteralErrorKind, S5Time, Time, TimeBase};
+
+fn s5(text: &str) -> S5Time {
+    match text.parse() {
+        Ok(t) => t,
+        Err(e) => panic!("{text}: {e}"),
+    }
+}
+
+fn s5_err(text: &str) -> LiteralErrorKind {
+    match text.parse::<S5Time>() {
+        Ok(t) => panic!("{text} parsed as {t:?}"),
+        Err(e) => e.kind,
+    }
+}
+
+fn time(text: &str) -> i32 {
+    match text.parse::<Time>() {
+        Ok(t) => t.as_millis(),
+        Err(e) => panic!("{text}: {e}"),
+    }
+}
+
+fn time_err(text: &str) -> LiteralErrorKind {
+    match text.parse::<Time>() {
+        Ok(t) => panic!("{text} parsed as {t:?}"),
+        Err(e) => e.kind,
+    }
+}
+
+/// Seed 000 §9.1, Fig. 9-1: 127 s on the 1 s base is `W#16#2127`.
+#[test]
+fn s5t_seed000_fig_9_1_127s_on_1s_base() {
+    let t = s5("W#16#2127");
+    assert_eq!(
+        (t.units(), t.base(), t.as_millis()),
+        (127, TimeBase::S1, 127_000)
+    );
+    assert_eq!(s5("S5T#2M7S"), t);
+    assert_eq!(t.to_string(), "S5T#2M7S");
+}
+
+/// Seed 003 §7: 1 s as `W#16#2001`, `W#16#1010` or `W#16#0100`; the automatic (preferred)
+/// encoding is the finest base, `W#16#0100`.
+#[test]
+fn s5t_seed003_three_encodings_of_one_second() {
+    for w in ["W#16#2001", "W#16#1010", "W#16#0100"] {
+        assert_eq!(s5(w).as_millis(), 1_000, "{w}");
+    }
+    assert_eq!(s5("S5T#1S").to_word(), 0x0100);
+    assert_eq!(S5Time::from_millis(1_000).map(S5Time::to_word), Ok(0x0100));
+}
+
+/// Seed 000 §9.1, Table 9-2: the range of each base, and the maximum `2H_46M_30S` = 9 990 s.
+#[test]
+fn s5t_seed000_table_9_2_base_ranges() {
+    let cases = [
+        ("S5T#10MS", 0x0001),
+        ("S5T#9S_990MS", 0x0999),
+        ("S5T#100MS", 0x0010), // automatic: 100 ms is 10 units of 10 ms
+        ("S5T#1M_39S_900MS", 0x1999),
+        ("S5T#16M_39S", 0x2999),
+        ("S5T#2H_46M_30S", 0x3999),
+    ];
+    for (lit, word) in cases {
+        assert_eq!(s5(lit).to_word(), word, "{lit}");
+    }
+    assert_eq!(s5("S5T#2H_46M_30S"), S5Time::MAX);
+    assert_eq!(s5_err("S5T#2H_46M_31S"), LiteralErrorKind::OutOfRange);
+    assert_eq!(s5_err("S5T#2H_46M_30S_1MS"), LiteralErrorKind::OutOfRange);
+}
+
+/// Seed 000 §9.1: "the value is rounded down to the nearest smaller number with this base".
+#[test]
+fn s5t_seed000_9_1_rounds_down() {
+    assert_eq!(s5("S5T#10S5MS").to_word(), 0x1100); // 10.005 s -> 100 x 100 ms
+    assert_eq!(s5("S5T#9MS").to_word(), 0x0000);
+    assert_eq!(s5("S5T#1H").to_word(), 0x3360);
+}
+
+#[test]
+fn s5t_literal_forms() {
+    assert_eq!(s5("s5time#2m7s"), s5("S5T#2M_7S"));
+    assert_eq!(s5("S5T#120S").as_millis(), 120_000);
+    assert_eq!(s5("W#16#C127"), s5("W#16#0127"), "bits 15-14 are ignored");
+    assert_eq!(s5("w#16#1"), S5Time::new(1, TimeBase::Ms10).unwrap());
+}
+
+#[test]
+fn s5t_malformed() {
+    use LiteralErrorKind::*;
+    let cases: &[(&str, LiteralErrorKind)] = &[
+        ("", Empty),
+        ("2M7S", Prefix),
+        ("T#2S", Prefix),
+        ("S5T#", NoComponents),
+        ("S5T#2", MissingUnit),
+        ("S5T#2X", UnknownUnit),
+        ("S5T#2D", UnknownUnit),
+        ("S5T#S", MissingDigits),
+        ("S5T#2S3M", UnitOrder(plc_timers::time::Unit::Minute)),
+        ("S5T#2S3S", UnitOrder(plc_timers::time::Unit::Second)),
+        (
+            "S5T#1M75S",
+            ComponentRange(plc_timers::time::Unit::Second, 75),
+        ),
+        ("S5T#1.5S", Fraction),
+        ("S5T#2S__3MS", UnexpectedChar('_')),
+        ("S5T#_2S", UnexpectedChar('_')),
+        ("S5T#2S_", UnexpectedChar('_')),
+        ("S5T#2S ", UnexpectedChar(' ')),
+        ("S5T#-2S", OutOfRange),
+        ("S5T#99999999999999999999999S", Overflow),
+        ("W#16#", HexDigits),
+        ("W#16#12345", HexDigits),
+        ("W#16#12G4", HexDigits),
+        ("W#16#20A1", BcdDigit(0xA)),
+        ("W#16#0F00", BcdDigit(0xF)),
+    ];
+    for (text, kind) in cases {
+        assert_eq!(s5_err(text), *kind, "{text}");
+    }
+}
+
+/// Seed 001, Table 8-21: T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms, stored as
+/// -2 147 483 648 ..= 2 147 483 647 ms; one past either end is an error.
+#[test]
+fn time_seed001_table_8_21_range_ends() {
+    assert_eq!(time("T#-24d_20h_31m_23s_648ms"), i32::MIN);
+    assert_eq!(time("T#24d_20h_31m_23s_647ms"), i32::MAX);
+    assert_eq!(
+        time_err("T#-24d_20h_31m_23s_649ms"),
+        LiteralErrorKind::OutOfRange
+    );
+    assert_eq!(
+        time_err("T#24d_20h_31m_23s_648ms"),
+        LiteralErrorKind::OutOfRange
+    );
+    assert_eq!(time_err("2147483648"), LiteralErrorKind::OutOfRange);
+    assert_eq!(time("-2147483648"), i32::MIN);
+    assert_eq!(Time::MIN.to_string(), "T#-24D_20H_31M_23S_648MS");
+    assert_eq!(Time::MAX.to_string(), "T#24D_20H_31M_23S_647MS");
+}
+
+/// Seed 001: "T#200ms or 200" and "T#2s_200ms".
+#[test]
+fn time_seed001_literal_forms() {
+    assert_eq!(time("T#200ms"), 200);
+    assert_eq!(time("200"), 200);
+    assert_eq!(time("T#2s_200ms"), 2_200);
+    assert_eq!(time("TIME#2S200MS"), 2_200);
+    assert_eq!(time("T#-5s"), -5_000);
+    assert_eq!(time("T#90m"), 5_400_000);
+    assert_eq!(Time::from_millis(2_200).to_string(), "T#2S_200MS");
+    assert_eq!(Time::ZERO.to_string(), "T#0MS");
+}
+
+#[test]
+fn time_malformed() {
+    use LiteralErrorKind::*;
+    let cases: &[(&str, LiteralErrorKind)] = &[
+        ("", Empty),
+        ("T#", NoComponents),
+        ("T#-", NoComponents),
+        ("X#5S", Prefix),
+        ("5S", UnexpectedChar('S')),
+        ("-", MissingDigits),
+        ("T#5", MissingUnit),
+        ("T#5Y", UnknownUnit),
+        (
+            "T#1H_75M",
+            ComponentRange(plc_timers::time::Unit::Minute, 75),
+        ),
+        ("T#1S_1H", UnitOrder(plc_timers::time::Unit::Hour)),
+        ("T#1.5S", Fraction),
+        ("T#--5S", UnexpectedChar('-')),
+        ("12a", UnexpectedChar('a')),
+    ];
+    for (text, kind) in cases {
+        assert_eq!(time_err(text), *kind, "{text}");
+    }
+}
