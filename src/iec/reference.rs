@@ -1,0 +1,205 @@
+//! The reference semantics of the IEC timers, one function per rule of the manual.
+//!
+//! Sources: seed 001 (S7-1200 system manual, "Timer instructions", Tables 8-19 to 8-22 and the
+//! "Timer operation" / "Timer programming" notes), seed 004 (lecture, same table). Rule IDs refer
+//! to `spec/requirements/iec.toml`.
+
+use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
+use crate::time::clock::ClockWord;
+use crate::time::Time;
+
+/// The reference model of one `IEC_TIMER` structure.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Reference<C> {
+    /// The structure's members, named as in the manual.
+    pub state: IecState<C>,
+}
+
+/// `PT` as the instruction uses it: negative taken as 0 (IEC-PT-NEG-01), in clock units.
+fn preset<C: ClockWord>(pt: Time) -> C {
+    C::from_preset(pt.clamp_negative())
+}
+
+/// Q while the timer is timing: TP's pulse and TOF's delayed Q are 1; TON and TONR wait.
+fn q_while_running(kind: IecKind) -> bool {
+    matches!(kind, IecKind::Tp | IecKind::Tof)
+}
+
+/// Q once ET has reached PT: TON and TONR switch on, TP's pulse and TOF's delay end.
+fn q_after_expiry(kind: IecKind) -> bool {
+    matches!(kind, IecKind::Ton | IecKind::Tonr)
+}
+
+impl<C: ClockWord> Reference<C> {
+    /// The initial structure: everything 0 (a new or non-retentive instance DB).
+    pub fn new() -> Reference<C> {
+        Reference::default()
+    }
+
+    /// IEC-START-01: on the starting edge the CPU clock is copied into START and the preset is
+    /// latched; it stays in force while the timer runs (IEC-PT-LATCH-01).
+    fn start(&mut self, now: C, pt: Time, kind: IecKind) {
+        let s = &mut self.state;
+        s.running = true;
+        s.start = now;
+        s.pt = preset(pt);
+        s.et = C::default();
+        s.q = q_while_running(kind);
+    }
+
+    /// IEC-UPDATE-01: an update subtracts START from the CPU clock (modulo 2^BITS, IEC-WRAP-01),
+    /// compares with PT and sets ELAPSED and Q; ELAPSED stops at PT (IEC-EXPIRY-01: expiry at
+    /// ET >= PT).
+    fn update(&mut self, now: C, kind: IecKind) {
+        let s = &mut self.state;
+        if !s.running {
+            return;
+        }
+        let elapsed = now.elapsed_since(s.start);
+        if elapsed >= s.pt {
+            s.et = s.pt;
+            s.q = q_after_expiry(kind);
+            s.running = false;
+            s.start = C::default();
+        } else {
+            s.et = elapsed;
+            s.q = q_while_running(kind);
+        }
+    }
+
+    /// Stops timing and clears ELAPSED and Q: TON on IN = 0, TOF on IN = 1 (Table 8-20), TONR on R.
+    fn reset_and_stop(&mut self) {
+        let s = &mut self.state;
+        s.running = false;
+        s.start = C::default();
+        s.et = C::default();
+        s.q = false;
+    }
+
+    /// TP (Table 8-20: "changing PT or IN while running has no effect"): a rising IN starts a
+    /// pulse of PT when no pulse runs; after the pulse ET stays at PT while IN = 1 and returns
+    /// to 0 when IN = 0 (TP-ET-01).
+    fn tp(&mut self, now: C, input: IecInput) {
+        self.update(now, IecKind::Tp);
+        let rising = input.input && !self.state.input;
+        if rising && !self.state.running {
+            self.start(now, input.pt, IecKind::Tp);
+            self.update(now, IecKind::Tp);
+        }
+        if !self.state.running && !input.input {
+            self.state.et = C::default();
+        }
+    }
+
+    /// TON: a rising IN starts timing; Q = 1 once ET reaches PT while IN stays 1; IN = 0 resets
+    /// and stops (Table 8-20).
+    fn ton(&mut self, now: C, input: IecInput) {
+        if !input.input {
+            self.reset_and_stop();
+        } else if !self.state.input {
+            self.start(now, input.pt, IecKind::Ton);
+            self.update(now, IecKind::Ton);
+        } else {
+            self.update(now, IecKind::Ton);
+        }
+    }
+
+    /// TOF: Q = 1 while IN = 1; a falling IN starts timing, Q falls when ET reaches PT; IN = 1
+    /// resets and stops (Table 8-20).
+    fn tof(&mut self, now: C, input: IecInput) {
+        if input.input {
+            self.reset_and_stop();
+            self.state.q = true;
+        } else if self.state.input {
+            self.start(now, input.pt, IecKind::Tof);
+            self.update(now, IecKind::Tof);
+        } else {
+            self.update(now, IecKind::Tof);
+        }
+    }
+
+    /// TONR: R resets ET and Q (TONR-R-01, before anything else); while IN = 1 the timer
+    /// accumulates, resuming from the accumulated ET with the PT of the moment it resumes
+    /// (TONR-RESUME-01); IN = 0 stops without reset (Table 8-20); Q stays 1 after expiry until R.
+    fn tonr(&mut self, now: C, input: IecInput) {
+        if input.reset {
+            self.reset_and_stop();
+            return;
+        }
+        let expired = self.state.q;
+        if input.input {
+            if !self.state.running && !expired {
+                // Resume: START shifted back by the accumulated time, so that an update's
+                // `now - START` is the accumulated total.
+                let accumulated = self.state.et;
+                self.start(now, input.pt, IecKind::Tonr);
+                self.state.start = now.elapsed_since(accumulated);
+            }
+            self.update(now, IecKind::Tonr);
+        } else if self.state.running {
+            self.update(now, IecKind::Tonr);
+            if self.state.running {
+                self.state.running = false;
+                self.state.start = C::default();
+            }
+        }
+    }
+}
+
+impl<C: ClockWord> IecTimerOps<C> for Reference<C> {
+    fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C> {
+        match kind {
+            IecKind::Tp => self.tp(now, input),
+            IecKind::Ton => self.ton(now, input),
+            IecKind::Tof => self.tof(now, input),
+            IecKind::Tonr => self.tonr(now, input),
+        }
+        self.state.kind = Some(kind);
+        self.state.input = input.input;
+        IecOutput {
+            q: self.state.q,
+            et: self.state.et,
+        }
+    }
+
+    /// IEC-ACCESS-01: reading Q through the structure updates the timer first.
+    fn read_q(&mut self, now: C) -> bool {
+        if let Some(kind) = self.state.kind {
+            self.update(now, kind);
+        }
+        self.state.q
+    }
+
+    /// IEC-ACCESS-01: reading ELAPSED through the structure updates the timer first.
+    fn read_et(&mut self, now: C) -> C {
+        if let Some(kind) = self.state.kind {
+            self.update(now, kind);
+        }
+        self.state.et
+    }
+
+    /// IEC-RT-01: the timer data is zeroed (seed 004: "wyzerowanie danych timera"; seed 001:
+    /// ELAPSED reset to 0): ET, Q, the running status and the stored IN; the preset stays.
+    fn reset_timer(&mut self) {
+        self.reset_and_stop();
+        self.state.input = false;
+    }
+
+    /// IEC-PT-COIL-01: the preset member is loaded; a running timer uses it from its next update.
+    /// ET is clamped to it so that ET <= PT holds.
+    fn preset_timer(&mut self, pt: Time) {
+        self.state.pt = preset(pt);
+        self.state.et = self.state.et.min(self.state.pt);
+    }
+
+    /// IEC-RETAIN-01: timer data is lost on RUN-STOP-RUN unless the structure is retentive.
+    fn run_stop_run(&mut self, retentive: bool) {
+        if !retentive {
+            *self = Reference::new();
+        }
+    }
+
+    fn state(&self) -> IecState<C> {
+        self.state
+    }
+}

@@ -1,0 +1,248 @@
+//! The `IEC_TIMER` structure as a soft-PLC holds it: 16 bytes, `#[repr(C)]` (seed 001: "each
+//! timer uses a 16-byte IEC_Timer structure"), with IN, Q, the running status and the last
+//! instruction packed into one flag byte.
+
+use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
+use crate::time::clock::ClockWord;
+use crate::time::Time;
+
+/// Flag bits of [`IecTimerOf::flags`].
+mod flag {
+    /// IN as the last call saw it.
+    pub const IN: u8 = 1 << 0;
+    /// Q.
+    pub const Q: u8 = 1 << 1;
+    /// Timing.
+    pub const RUNNING: u8 = 1 << 2;
+    /// Bits 4-5 hold the last instruction's kind; this bit says one has run.
+    pub const KIND_VALID: u8 = 1 << 6;
+    /// Shift of the kind field.
+    pub const KIND_SHIFT: u8 = 4;
+    /// Every bit in use.
+    pub const ALL: u8 = IN | Q | RUNNING | KIND_VALID | (0b11 << KIND_SHIFT);
+}
+
+/// Q while running, by kind code (TP, TON, TOF, TONR), as a mask of [`flag::Q`].
+const Q_RUNNING: [u8; 4] = [flag::Q, 0, flag::Q, 0];
+/// Q after expiry, by kind code.
+const Q_EXPIRED: [u8; 4] = [0, flag::Q, 0, flag::Q];
+
+const fn code(kind: IecKind) -> usize {
+    kind as usize
+}
+
+const fn kind_of(code: u8) -> IecKind {
+    match code & 0b11 {
+        0 => IecKind::Tp,
+        1 => IecKind::Ton,
+        2 => IecKind::Tof,
+        _ => IecKind::Tonr,
+    }
+}
+
+/// The `IEC_TIMER` structure over a clock of width `C`.
+///
+/// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each), one
+/// flag byte, three bytes of padding.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[repr(C)]
+pub struct IecTimerOf<C> {
+    start: C,
+    pt: C,
+    et: C,
+    flags: u8,
+}
+
+/// The S7-1200 `IEC_TIMER`: the structure on the 32-bit millisecond clock.
+pub type IecTimer = IecTimerOf<u32>;
+
+// The manual's size, checked at compile time.
+const _: () = assert!(core::mem::size_of::<IecTimer>() == 16);
+
+impl<C: ClockWord> IecTimerOf<C> {
+    /// The initial structure (all zero).
+    pub fn new() -> IecTimerOf<C> {
+        IecTimerOf::default()
+    }
+
+    /// The structure holding `state`, or `None` if `state` violates [`IecState::is_valid`].
+    /// The inverse of [`IecTimerOf::abstraction`].
+    pub fn from_state(state: IecState<C>) -> Option<IecTimerOf<C>> {
+        if !state.is_valid() {
+            return None;
+        }
+        let mut flags = 0;
+        flags |= if state.input { flag::IN } else { 0 };
+        flags |= if state.q { flag::Q } else { 0 };
+        flags |= if state.running { flag::RUNNING } else { 0 };
+        if let Some(kind) = state.kind {
+            flags |= flag::KIND_VALID | (kind as u8) << flag::KIND_SHIFT;
+        }
+        Some(IecTimerOf {
+            start: state.start,
+            pt: state.pt,
+            et: state.et,
+            flags,
+        })
+    }
+
+    /// The abstraction function: the reference state this structure represents.
+    pub fn abstraction(&self) -> IecState<C> {
+        let f = self.flags;
+        IecState {
+            kind: (f & flag::KIND_VALID != 0).then(|| kind_of(f >> flag::KIND_SHIFT)),
+            input: f & flag::IN != 0,
+            running: f & flag::RUNNING != 0,
+            start: self.start,
+            pt: self.pt,
+            et: self.et,
+            q: f & flag::Q != 0,
+        }
+    }
+
+    /// Whether the raw fields are a state the operations can reach: no stray flag bits and
+    /// the [`IecState::is_valid`] invariant.
+    pub fn is_valid(&self) -> bool {
+        self.flags & !flag::ALL == 0 && self.abstraction().is_valid()
+    }
+
+    /// `PT` as a `TIME` (the latched preset).
+    pub fn pt(&self) -> C {
+        self.pt
+    }
+
+    /// The update for instruction code `k`: one subtraction and one compare on the hot path.
+    #[inline]
+    fn update(&mut self, now: C, k: usize) {
+        if self.flags & flag::RUNNING == 0 {
+            return;
+        }
+        let elapsed = now.elapsed_since(self.start);
+        if elapsed >= self.pt {
+            self.et = self.pt;
+            self.start = C::default();
+            self.flags = (self.flags & !(flag::RUNNING | flag::Q)) | Q_EXPIRED[k];
+        } else {
+            self.et = elapsed;
+            self.flags = (self.flags & !flag::Q) | Q_RUNNING[k];
+        }
+    }
+
+    #[inline]
+    fn start(&mut self, now: C, pt: Time, k: usize) {
+        self.start = now;
+        self.pt = C::from_preset(pt.clamp_negative());
+        self.et = C::default();
+        self.flags = (self.flags & !flag::Q) | flag::RUNNING | Q_RUNNING[k];
+    }
+
+    #[inline]
+    fn stop_clear(&mut self) {
+        self.start = C::default();
+        self.et = C::default();
+        self.flags &= !(flag::RUNNING | flag::Q);
+    }
+}
+
+impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
+    #[inline]
+    fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C> {
+        let k = code(kind);
+        let was_in = self.flags & flag::IN != 0;
+        let running = self.flags & flag::RUNNING != 0;
+        match kind {
+            IecKind::Tp => {
+                self.update(now, k);
+                if input.input && !was_in && self.flags & flag::RUNNING == 0 {
+                    self.start(now, input.pt, k);
+                    self.update(now, k);
+                }
+                if self.flags & flag::RUNNING == 0 && !input.input {
+                    self.et = C::default();
+                }
+            }
+            IecKind::Ton => {
+                if !input.input {
+                    self.stop_clear();
+                } else {
+                    if !was_in {
+                        self.start(now, input.pt, k);
+                    }
+                    self.update(now, k);
+                }
+            }
+            IecKind::Tof => {
+                if input.input {
+                    self.stop_clear();
+                    self.flags |= flag::Q;
+                } else {
+                    if was_in {
+                        self.start(now, input.pt, k);
+                    }
+                    self.update(now, k);
+                }
+            }
+            IecKind::Tonr => {
+                if input.reset {
+                    self.stop_clear();
+                } else if input.input {
+                    if !running && self.flags & flag::Q == 0 {
+                        let accumulated = self.et;
+                        self.start(now, input.pt, k);
+                        self.start = now.elapsed_since(accumulated);
+                    }
+                    self.update(now, k);
+                } else if running {
+                    self.update(now, k);
+                    if self.flags & flag::RUNNING != 0 {
+                        self.flags &= !flag::RUNNING;
+                        self.start = C::default();
+                    }
+                }
+            }
+        }
+        let kind_bits = flag::KIND_VALID | (k as u8) << flag::KIND_SHIFT;
+        let in_bit = if input.input { flag::IN } else { 0 };
+        self.flags = (self.flags & (flag::Q | flag::RUNNING)) | kind_bits | in_bit;
+        IecOutput {
+            q: self.flags & flag::Q != 0,
+            et: self.et,
+        }
+    }
+
+    #[inline]
+    fn read_q(&mut self, now: C) -> bool {
+        if self.flags & flag::KIND_VALID != 0 {
+            self.update(now, usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+        }
+        self.flags & flag::Q != 0
+    }
+
+    #[inline]
+    fn read_et(&mut self, now: C) -> C {
+        if self.flags & flag::KIND_VALID != 0 {
+            self.update(now, usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+        }
+        self.et
+    }
+
+    fn reset_timer(&mut self) {
+        self.stop_clear();
+        self.flags &= !flag::IN;
+    }
+
+    fn preset_timer(&mut self, pt: Time) {
+        self.pt = C::from_preset(pt.clamp_negative());
+        self.et = self.et.min(self.pt);
+    }
+
+    fn run_stop_run(&mut self, retentive: bool) {
+        if !retentive {
+            *self = IecTimerOf::default();
+        }
+    }
+
+    fn state(&self) -> IecState<C> {
+        self.abstraction()
+    }
+}
