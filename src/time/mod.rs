@@ -9,8 +9,8 @@
 pub mod clock;
 mod literal;
 mod s5time;
-mod time;
+mod iec_time;
 
 pub use literal::{LiteralError, LiteralErrorKind, Unit};
 pub use s5time::{S5Time, S5TimeError, TimeBase};
-pub use time::Time;
+pub use iec_time::Time;
