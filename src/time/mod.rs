@@ -7,10 +7,10 @@
 //! - [`LiteralError`]: what was wrong with a literal, and where.
 
 pub mod clock;
+mod iec_time;
 mod literal;
 mod s5time;
-mod iec_time;
 
-pub use literal::{LiteralError, LiteralErrorKind, Unit};
-pub use s5time::{S5Time, S5TimeError, TimeBase};
 pub use iec_time::Time;
+pub use literal::{LiteralError, LiteralErrorKind, Unit};
+pub use s5time::{bcd3_encode, S5Time, S5TimeError, TimeBase};

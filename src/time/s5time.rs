@@ -121,8 +121,9 @@ pub struct S5Time {
     base: TimeBase,
 }
 
-/// Encodes 0..=999 as three BCD digits. Callers guarantee `v <= 999`.
-pub(crate) const fn bcd3_encode(v: u16) -> u16 {
+/// Encodes 0..=999 as three BCD digits (bits 11-0). Values above 999 give digits above 9 in
+/// the hundreds; callers keep `v <= 999`.
+pub const fn bcd3_encode(v: u16) -> u16 {
     (v / 100) << 8 | (v / 10 % 10) << 4 | (v % 10)
 }
 
