@@ -1,1 +1,208 @@
-//! placeholder
+//! Counters: the IEC counters `CTU`, `CTD`, `CTUD` of S7-1200/1500 over every integer type
+//! (seed 004; semantics brief §4), and the S5 counters `S_CU`, `S_CD`, `S_CUD` of S7-300/400
+//! ([`s5`]).
+//!
+//! IEC counters, one interface and two implementations:
+//! - [`reference::CounterRef`]: the rules one by one, as the manual states them.
+//! - [`packed::PackedCounter`]: CV and both edge memories in one small struct with a
+//!   branch-free step, and [`packed::CounterBank`], a bank that finds the edges of 64 counters
+//!   with one word operation.
+//!
+//! ```
+//! use plc_timers::counter::{reference::CounterRef, CounterInput, CounterKind};
+//!
+//! let mut ctu = CounterRef::<i16>::new(CounterKind::Ctu);
+//! let pulse = |cu| CounterInput { cu, pv: 2, ..CounterInput::default() };
+//! for cu in [true, false, true] {
+//!     ctu.call(pulse(cu));
+//! }
+//! let out = ctu.call(pulse(true)); // CU held: no new edge
+//! assert_eq!((out.cv, out.qu), (2, true));
+//! ```
+
+pub mod packed;
+pub mod reference;
+pub mod s5;
+
+use core::fmt::Debug;
+
+/// The integer types a counter counts in: SInt, Int, DInt, LInt, USInt, UInt, UDInt, ULInt.
+/// One generic implementation serves all eight.
+pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
+    /// The type's name in the manual (`INT`, `UDINT`, …).
+    const NAME: &'static str;
+    /// The smallest value.
+    const MIN: Self;
+    /// The largest value.
+    const MAX: Self;
+    /// Zero.
+    const ZERO: Self;
+    /// `self + 1`, staying at `MAX` (CNT-SAT-01: a counter never wraps).
+    fn saturating_inc(self) -> Self;
+    /// `self - 1`, staying at `MIN`.
+    fn saturating_dec(self) -> Self;
+    /// The value as an `i128` (every type fits).
+    fn to_i128(self) -> i128;
+    /// The value `v` if it is in the type's range.
+    fn from_i128(v: i128) -> Option<Self>;
+}
+
+macro_rules! counter_int {
+    ($t:ty, $name:literal) => {
+        impl CounterInt for $t {
+            const NAME: &'static str = $name;
+            const MIN: Self = <$t>::MIN;
+            const MAX: Self = <$t>::MAX;
+            const ZERO: Self = 0;
+            #[inline]
+            fn saturating_inc(self) -> Self {
+                self.saturating_add(1)
+            }
+            #[inline]
+            fn saturating_dec(self) -> Self {
+                self.saturating_sub(1)
+            }
+            #[inline]
+            fn to_i128(self) -> i128 {
+                self as i128
+            }
+            #[inline]
+            fn from_i128(v: i128) -> Option<Self> {
+                <$t>::try_from(v).ok()
+            }
+        }
+    };
+}
+
+counter_int!(i8, "SINT");
+counter_int!(i16, "INT");
+counter_int!(i32, "DINT");
+counter_int!(i64, "LINT");
+counter_int!(u8, "USINT");
+counter_int!(u16, "UINT");
+counter_int!(u32, "UDINT");
+counter_int!(u64, "ULINT");
+
+/// Which IEC counter instruction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
+pub enum CounterKind {
+    /// `CTU`: counts up on rising CU; R resets; Q = CV >= PV.
+    Ctu,
+    /// `CTD`: counts down on rising CD; LD loads PV; Q = CV <= 0.
+    Ctd,
+    /// `CTUD`: both; QU = CV >= PV, QD = CV <= 0.
+    Ctud,
+}
+
+impl CounterKind {
+    /// All three.
+    pub const ALL: [CounterKind; 3] = [CounterKind::Ctu, CounterKind::Ctd, CounterKind::Ctud];
+
+    /// The instruction's name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            CounterKind::Ctu => "CTU",
+            CounterKind::Ctd => "CTD",
+            CounterKind::Ctud => "CTUD",
+        }
+    }
+
+    /// The inputs this instruction has, others forced to 0: CTU has no CD and no LD, CTD no CU
+    /// and no R (CNT-INPUTS-01).
+    pub const fn mask(self, input: CounterInput<()>) -> CounterInput<()> {
+        match self {
+            CounterKind::Ctu => CounterInput {
+                cd: false,
+                ld: false,
+                ..input
+            },
+            CounterKind::Ctd => CounterInput {
+                cu: false,
+                r: false,
+                ..input
+            },
+            CounterKind::Ctud => input,
+        }
+    }
+}
+
+/// The inputs of one call.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
+pub struct CounterInput<T> {
+    /// `CU`, count up (rising edge).
+    pub cu: bool,
+    /// `CD`, count down (rising edge).
+    pub cd: bool,
+    /// `R`, reset CV to 0 (level).
+    pub r: bool,
+    /// `LD` (`LOAD`), load PV into CV (level).
+    pub ld: bool,
+    /// `PV`, the preset.
+    pub pv: T,
+}
+
+impl<T> CounterInput<T> {
+    /// The boolean inputs alone.
+    pub const fn signals(&self) -> CounterInput<()> {
+        CounterInput {
+            cu: self.cu,
+            cd: self.cd,
+            r: self.r,
+            ld: self.ld,
+            pv: (),
+        }
+    }
+
+    /// These inputs with the booleans replaced by `signals`.
+    pub fn with_signals(self, signals: CounterInput<()>) -> CounterInput<T> {
+        CounterInput {
+            cu: signals.cu,
+            cd: signals.cd,
+            r: signals.r,
+            ld: signals.ld,
+            pv: self.pv,
+        }
+    }
+}
+
+/// The outputs of one call. CTU's Q is `qu`; CTD's Q is `qd`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CounterOutput<T> {
+    /// `QU` (CTU's `Q`): CV >= PV.
+    pub qu: bool,
+    /// `QD` (CTD's `Q`): CV <= 0.
+    pub qd: bool,
+    /// `CV`.
+    pub cv: T,
+}
+
+/// The observable state of an IEC counter: what the abstraction function produces.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
+pub struct CounterState<T> {
+    /// `CV`.
+    pub cv: T,
+    /// CU at the previous call (edge memory).
+    pub cu_prev: bool,
+    /// CD at the previous call (edge memory).
+    pub cd_prev: bool,
+}
+
+/// What both IEC counter implementations offer.
+pub trait CounterOps<T: CounterInt> {
+    /// One call of the instruction `kind`.
+    fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T>;
+    /// The observable state.
+    fn state(&self) -> CounterState<T>;
+}
+
+/// The outputs for `cv` and `pv` (CNT-Q-01): QU = CV >= PV, QD = CV <= 0.
+pub fn outputs<T: CounterInt>(cv: T, pv: T) -> CounterOutput<T> {
+    CounterOutput {
+        qu: cv >= pv,
+        qd: cv <= T::ZERO,
+        cv,
+    }
+}

@@ -1,0 +1,71 @@
+//! The reference semantics of CTU, CTD and CTUD, one function per rule (seed 004; semantics
+//! brief §4). Rule IDs refer to `spec/requirements/counter.toml`.
+
+use super::{
+    outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
+};
+
+/// One IEC counter instance.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CounterRef<T> {
+    /// The instruction this instance runs.
+    pub kind: CounterKind,
+    /// Its state.
+    pub state: CounterState<T>,
+}
+
+impl<T: CounterInt> CounterRef<T> {
+    /// A new instance (CV = 0, no edge seen).
+    pub fn new(kind: CounterKind) -> CounterRef<T> {
+        CounterRef {
+            kind,
+            state: CounterState::default(),
+        }
+    }
+
+    /// CNT-EDGE-01: a count needs a change from 0 to 1; the edge memory takes the input on every
+    /// call, also while R or LD holds, so releasing R with CU held does not count.
+    fn edges(&mut self, input: &CounterInput<T>) -> (bool, bool) {
+        let up = input.cu && !self.state.cu_prev;
+        let down = input.cd && !self.state.cd_prev;
+        self.state.cu_prev = input.cu;
+        self.state.cd_prev = input.cd;
+        (up, down)
+    }
+
+    /// CNT-SIMUL-01: rising CU and CD in the same call leave CV unchanged; CNT-SAT-01: counting
+    /// stops at the type's limits, it never wraps.
+    fn count(cv: T, up: bool, down: bool) -> T {
+        match (up, down) {
+            (true, false) => cv.saturating_inc(),
+            (false, true) => cv.saturating_dec(),
+            _ => cv,
+        }
+    }
+
+    /// One call with the inputs this kind has (CNT-INPUTS-01). CNT-PRIO-01: R before LD before
+    /// counting; R and LD are levels.
+    pub fn call(&mut self, input: CounterInput<T>) -> CounterOutput<T> {
+        let input = input.with_signals(self.kind.mask(input.signals()));
+        let (up, down) = self.edges(&input);
+        self.state.cv = if input.r {
+            T::ZERO
+        } else if input.ld {
+            input.pv
+        } else {
+            Self::count(self.state.cv, up, down)
+        };
+        outputs(self.state.cv, input.pv)
+    }
+}
+
+impl<T: CounterInt> CounterOps<T> for CounterRef<T> {
+    fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
+        self.kind = kind;
+        CounterRef::call(self, input)
+    }
+
+    fn state(&self) -> CounterState<T> {
+        self.state
+    }
+}
