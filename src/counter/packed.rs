@@ -27,7 +27,7 @@ impl<T: CounterInt> PackedCounter<T> {
     pub fn from_state(state: CounterState<T>) -> PackedCounter<T> {
         PackedCounter {
             cv: state.cv,
-            edges: u8::from(state.cu_prev) * CU_PREV | u8::from(state.cd_prev) * CD_PREV,
+            edges: (u8::from(state.cu_prev) * CU_PREV) | (u8::from(state.cd_prev) * CD_PREV),
         }
     }
 
@@ -50,7 +50,7 @@ impl<T: CounterInt> CounterOps<T> for PackedCounter<T> {
     #[inline]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
         let i = kind.mask(input.signals());
-        let now = u8::from(i.cu) * CU_PREV | u8::from(i.cd) * CD_PREV;
+        let now = (u8::from(i.cu) * CU_PREV) | (u8::from(i.cd) * CD_PREV);
         let rising = now & !self.edges;
         self.edges = now;
         // Up only, down only, or neither (both rising cancel out).

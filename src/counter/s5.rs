@@ -283,9 +283,9 @@ impl S5CounterCell {
         }
         Some(S5CounterCell(
             state.cv
-                | (state.cu_prev as u16) * CU_PREV
-                | (state.cd_prev as u16) * CD_PREV
-                | (state.s_prev as u16) * S_PREV,
+                | ((state.cu_prev as u16) * CU_PREV)
+                | ((state.cd_prev as u16) * CD_PREV)
+                | ((state.s_prev as u16) * S_PREV),
         ))
     }
 
@@ -303,7 +303,7 @@ impl S5CounterCell {
     #[inline]
     pub const fn step(self, i: S5CounterInput) -> S5CounterCell {
         let w = self.0;
-        let now = (i.cu as u16) * CU_PREV | (i.cd as u16) * CD_PREV | (i.s as u16) * S_PREV;
+        let now = ((i.cu as u16) * CU_PREV) | ((i.cd as u16) * CD_PREV) | ((i.s as u16) * S_PREV);
         let rising = now & !w;
         let cv = w & CV;
         let cv = match rising & (CU_PREV | CD_PREV) {
