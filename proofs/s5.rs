@@ -1,1 +1,405 @@
-//! Properties of this family (filled in by its issue).
+//! Properties of the S5 timers: the packed cell simulates the reference, the invariants hold,
+//! R resets, no start without a signal change, no panic.
+//!
+//! Each property is a plain function; `exhaustive_*` tests drive it over finite domains, and the
+//! `kani` module drives it over symbolic state for `cargo kani --tests`.
+
+use std::thread;
+
+use plc_timers::s5::cell::{self, Cell};
+use plc_timers::s5::memory::TimerMemory;
+use plc_timers::s5::reference::S5TimerRef;
+use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State};
+use plc_timers::time::{S5Time, TimeBase};
+
+/// Whether `input` gives `kind` a start signal from `state`: a change of S in the kind's
+/// direction, or a rising FR (which re-arms the edge memory).
+pub fn start_signal(kind: S5Kind, state: &S5State, input: &S5Input) -> bool {
+    let edge = if kind.starts_on_falling_edge() {
+        !input.s && state.s_prev
+    } else {
+        input.s && !state.s_prev
+    };
+    edge || (input.fr && !state.fr_prev)
+}
+
+/// One reference step from `state`: `ticks` OS ticks, then one execution.
+pub fn reference_step(
+    kind: S5Kind,
+    state: S5State,
+    ticks: u64,
+    input: S5Input,
+) -> (S5State, S5Output) {
+    let mut r = S5TimerRef {
+        kind,
+        state,
+        t_prev: 0,
+    };
+    r.tick(ticks);
+    let out = r.execute(input);
+    (r.state, out)
+}
+
+/// S5-EQUIV-01: for every valid state, tick count and input, one step of the packed cell,
+/// mapped through the abstraction function, equals one step of the reference, and the outputs
+/// agree. By induction over the steps this covers every trace.
+pub fn prop_step_equivalence(kind: S5Kind, state: S5State, ticks: u64, input: S5Input) {
+    let Some(c) = Cell::from_state(state) else {
+        return;
+    };
+    assert_eq!(
+        cell::abstraction(c),
+        state,
+        "S5-EQUIV-01: abstraction inverts from_state"
+    );
+    let (r_state, r_out) = reference_step(kind, state, ticks, input);
+    let c = c.tick(ticks).execute(kind, input);
+    assert_eq!(
+        cell::abstraction(c),
+        r_state,
+        "S5-EQUIV-01 {kind:?} {state:?} {ticks} {input:?}"
+    );
+    assert_eq!(
+        c.output(),
+        r_out,
+        "S5-EQUIV-01 outputs {kind:?} {state:?} {ticks} {input:?}"
+    );
+}
+
+/// S5TMR-RANGE-01, S5TMR-R-01, S5TMR-EDGE-01: after any step the value is 0..=999 with valid
+/// BCD and a base code, at most 9 990 s; R = 1 leaves the timer stopped and cleared with Q = 0;
+/// a stopped timer only starts, and the value only grows, on a start signal.
+pub fn prop_invariants(kind: S5Kind, state: S5State, ticks: u64, input: S5Input) {
+    if !state.is_valid() {
+        return;
+    }
+    let (after, out) = reference_step(kind, state, ticks, input);
+    assert!(after.value <= 999, "S5TMR-RANGE-01: value {}", after.value);
+    assert!(
+        S5Time::from_word(out.bcd).is_ok_and(|t| t.units() == out.bi),
+        "S5TMR-RANGE-01: BCD {:#06X} is the BCD form of BI {}",
+        out.bcd,
+        out.bi
+    );
+    assert_eq!(
+        out.bcd & 0xC000,
+        0,
+        "S5TMR-RANGE-01: bits 15-14 are never produced"
+    );
+    let millis = u32::from(after.value) * after.base.millis();
+    assert!(
+        millis <= S5Time::MAX_MILLIS,
+        "S5TMR-RANGE-01: {millis} ms above 9 990 s"
+    );
+    if input.r {
+        assert_eq!(
+            (after.running, after.value, after.base, after.q),
+            (false, 0, TimeBase::Ms10, false),
+            "S5TMR-R-01: R = 1 resets"
+        );
+    }
+    if !start_signal(kind, &state, &input) {
+        assert!(
+            !after.running || state.running,
+            "S5TMR-EDGE-01: started without a signal change"
+        );
+        assert!(
+            after.value <= state.value,
+            "S5TMR-EDGE-01: value reloaded without a signal change"
+        );
+    }
+}
+
+/// S5TMR-TICK-01: a running timer of value v with a non-zero value stops on exactly its v-th
+/// tick: after v - 1 ticks it still runs with value 1, after v it has run out.
+pub fn prop_expiry_on_vth_tick(kind: S5Kind, value: u16, base: TimeBase) {
+    if value == 0 || value > 999 {
+        return;
+    }
+    let state = S5State {
+        running: true,
+        value,
+        base,
+        q: plc_timers::s5::reference::q_while_running(kind),
+        s_prev: true,
+        fr_prev: false,
+    };
+    let mut r = S5TimerRef {
+        kind,
+        state,
+        t_prev: 0,
+    };
+    r.tick(u64::from(value) - 1);
+    assert!(
+        r.state.running && r.state.value == 1,
+        "S5TMR-TICK-01: still running before the v-th tick"
+    );
+    r.tick(1);
+    assert!(
+        !r.state.running && r.state.value == 0,
+        "S5TMR-TICK-01: run out on the v-th tick"
+    );
+    assert_eq!(r.state.q, !state.q, "S5TMR-EXPIRE-01: expiry inverts Q");
+}
+
+/// Every S5 state: value 0..=999, four bases, four flags (64 000 states).
+pub fn all_states() -> impl Iterator<Item = S5State> {
+    (0..=999u16).flat_map(|value| {
+        TimeBase::ALL.into_iter().flat_map(move |base| {
+            (0..16u8).map(move |f| S5State {
+                running: f & 1 != 0,
+                value,
+                base,
+                q: f & 2 != 0,
+                s_prev: f & 4 != 0,
+                fr_prev: f & 8 != 0,
+            })
+        })
+    })
+}
+
+/// Tick counts that reach every case of the tick rule: none, one, two, one short of the
+/// largest value, the largest value, past it, and the largest count.
+const TICKS: [u64; 7] = [0, 1, 2, 998, 999, 1000, u64::MAX];
+
+/// TVs that reach every case of a start: zero (seed 003's value 0), one unit, the largest value,
+/// and each base. The value of TV only matters on a start, where `exhaustive_every_tv` takes all
+/// 4 000 valid words.
+fn tvs() -> Vec<S5Time> {
+    [0x0000, 0x0001, 0x0999, 0x1500, 0x2001, 0x3999]
+        .into_iter()
+        .filter_map(|w| S5Time::from_word(w).ok())
+        .collect()
+}
+
+fn for_all_inputs(mut f: impl FnMut(u64, S5Input)) {
+    for tv in tvs() {
+        for ticks in TICKS {
+            for bits in 0..8u8 {
+                f(
+                    ticks,
+                    S5Input {
+                        s: bits & 1 != 0,
+                        r: bits & 2 != 0,
+                        fr: bits & 4 != 0,
+                        tv,
+                    },
+                );
+            }
+        }
+    }
+}
+
+/// Exhaustive: every kind x every state (64 000) x tick counts (7) x S, R, FR (8) x TVs (6):
+/// 107.5 million steps, split over two threads. Complete for the state space; the tick counts
+/// cover every branch of the tick rule (0, below, at and above the value), and the TV values
+/// every branch of a start (the full TV range is `exhaustive_every_tv`).
+#[test]
+fn exhaustive_step_equivalence_and_invariants() {
+    thread::scope(|scope| {
+        for kinds in [&S5Kind::ALL[..3], &S5Kind::ALL[3..]] {
+            scope.spawn(move || {
+                for &kind in kinds {
+                    for state in all_states() {
+                        for_all_inputs(|ticks, input| {
+                            prop_step_equivalence(kind, state, ticks, input);
+                            prop_invariants(kind, state, ticks, input);
+                        });
+                    }
+                }
+            });
+        }
+    });
+}
+
+/// Exhaustive over TV: all 4 000 valid S5TIME words x every kind x every combination of the
+/// edge memories and S, R, FR (64) x three representative prior states (cleared, running,
+/// expired) x 0 or 1 tick. Together with `exhaustive_step_equivalence_and_invariants` (which
+/// covers every state) this covers every (state, TV) pair on the steps where TV is read.
+#[test]
+fn exhaustive_every_tv() {
+    let mut n = 0u64;
+    for word in 0..=0x3FFFu16 {
+        let Ok(tv) = S5Time::from_word(word) else {
+            continue;
+        };
+        n += 1;
+        for kind in S5Kind::ALL {
+            for bits in 0..64u8 {
+                for (running, value, q) in [(false, 0, false), (true, 7, true), (false, 0, true)] {
+                    let state = S5State {
+                        running,
+                        value,
+                        base: TimeBase::S1,
+                        q,
+                        s_prev: bits & 8 != 0,
+                        fr_prev: bits & 16 != 0,
+                    };
+                    let input = S5Input {
+                        s: bits & 1 != 0,
+                        r: bits & 2 != 0,
+                        fr: bits & 4 != 0,
+                        tv,
+                    };
+                    let ticks = u64::from(bits >> 5);
+                    prop_step_equivalence(kind, state, ticks, input);
+                    prop_invariants(kind, state, ticks, input);
+                }
+            }
+        }
+    }
+    assert_eq!(n, 4_000, "every valid S5TIME word visited");
+}
+
+/// Exhaustive: the expiry tick for every kind, every value 1..=999 and every base.
+#[test]
+fn exhaustive_expiry_on_vth_tick() {
+    for kind in S5Kind::ALL {
+        for value in 1..=999 {
+            for base in TimeBase::ALL {
+                prop_expiry_on_vth_tick(kind, value, base);
+            }
+        }
+    }
+}
+
+/// S5-EQUIV-02: from the initial state, every input sequence of length 5 over 24 symbols (six
+/// S/R/FR patterns x a time step of 0 ms, one 10 ms tick, 25 ms or 1 s: 7.96 million sequences
+/// per kind) gives the same outputs and states through the reference's `call` (ticks counted
+/// from the clock) and a one-timer `TimerMemory` (ticks applied per base by the area). TV = 30 ms
+/// (3 units): the sequences reach start, run, expiry, restart and reset.
+#[test]
+fn bounded_sequences_reference_vs_memory_area() {
+    // Symbols: (S, R, FR) x time step; 6 input patterns x 4 steps = 24 symbols, length 5.
+    const PATTERNS: [(bool, bool, bool); 6] = [
+        (false, false, false),
+        (true, false, false),
+        (false, true, false),
+        (true, true, false),
+        (false, false, true),
+        (true, false, true),
+    ];
+    const STEPS: [u64; 4] = [0, 10, 25, 1000];
+    let tv = S5Time::from_word(0x0003).expect("valid word");
+    let symbols = PATTERNS.len() * STEPS.len();
+    let sequences = symbols.pow(5);
+    for kind in S5Kind::ALL {
+        for mut code in 0..sequences {
+            let mut r = S5TimerRef::new(kind);
+            let mut area = TimerMemory::<1>::new();
+            let mut t = 0u64;
+            for _ in 0..5 {
+                let sym = code % symbols;
+                code /= symbols;
+                let (s, rr, fr) = PATTERNS[sym % PATTERNS.len()];
+                t += STEPS[sym / PATTERNS.len()];
+                let input = S5Input { s, r: rr, fr, tv };
+                let a = r.call(t, input);
+                let b = area.call(0, kind, t, input).expect("timer 0 exists");
+                assert_eq!(a, b, "S5-EQUIV-02 {kind:?} at t = {t}");
+                assert_eq!(
+                    cell::abstraction(area.cells()[0]),
+                    r.state,
+                    "S5-EQUIV-02 state"
+                );
+            }
+        }
+    }
+}
+
+/// S5-AREA-01: one tick of an area of 4 timers (one per base, all states of interest) equals
+/// the reference tick of each timer whose base matches, and leaves the others unchanged.
+#[test]
+fn exhaustive_area_tick_per_base() {
+    for value in 0..=999u16 {
+        for flags in 0..4u8 {
+            for tick_base in TimeBase::ALL {
+                for n in [1u64, 2, 999] {
+                    let mut area = TimerMemory::<4>::new();
+                    let mut refs = Vec::new();
+                    for (i, base) in TimeBase::ALL.into_iter().enumerate() {
+                        let state = S5State {
+                            running: flags & 1 != 0,
+                            value,
+                            base,
+                            q: flags & 2 != 0,
+                            s_prev: false,
+                            fr_prev: false,
+                        };
+                        let cell = Cell::from_state(state).expect("valid");
+                        area = with_cell(area, i, cell);
+                        refs.push(S5TimerRef {
+                            kind: S5Kind::SOdt,
+                            state,
+                            t_prev: 0,
+                        });
+                    }
+                    area.tick(tick_base, n);
+                    for (i, r) in refs.iter_mut().enumerate() {
+                        if r.state.base == tick_base {
+                            r.tick(n);
+                        }
+                        assert_eq!(cell::abstraction(area.cells()[i]), r.state, "S5-AREA-01");
+                    }
+                }
+            }
+        }
+    }
+}
+
+fn with_cell<const N: usize>(area: TimerMemory<N>, index: usize, cell: Cell) -> TimerMemory<N> {
+    let mut cells = *area.cells();
+    cells[index] = cell;
+    TimerMemory::from_cells(cells, area.now())
+}
+
+#[cfg(kani)]
+mod kani_harnesses {
+    use super::*;
+
+    fn any_state() -> S5State {
+        let value: u16 = kani::any();
+        kani::assume(value <= 999);
+        S5State {
+            running: kani::any(),
+            value,
+            base: TimeBase::from_bits(kani::any()),
+            q: kani::any(),
+            s_prev: kani::any(),
+            fr_prev: kani::any(),
+        }
+    }
+
+    fn any_input() -> S5Input {
+        let units: u16 = kani::any();
+        kani::assume(units <= 999);
+        let tv = match S5Time::new(units, TimeBase::from_bits(kani::any())) {
+            Ok(tv) => tv,
+            Err(_) => S5Time::ZERO,
+        };
+        S5Input {
+            s: kani::any(),
+            r: kani::any(),
+            fr: kani::any(),
+            tv,
+        }
+    }
+
+    /// S5-EQUIV-01 over every state, tick count and input.
+    #[kani::proof]
+    fn kani_step_equivalence() {
+        prop_step_equivalence(kani::any(), any_state(), kani::any(), any_input());
+    }
+
+    /// S5TMR-RANGE-01, S5TMR-R-01, S5TMR-EDGE-01 over every state, tick count and input.
+    #[kani::proof]
+    fn kani_invariants() {
+        prop_invariants(kani::any(), any_state(), kani::any(), any_input());
+    }
+
+    /// S5TMR-TICK-01 for every kind, value and base.
+    #[kani::proof]
+    fn kani_expiry_on_vth_tick() {
+        prop_expiry_on_vth_tick(kani::any(), kani::any(), TimeBase::from_bits(kani::any()));
+    }
+}

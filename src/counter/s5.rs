@@ -160,7 +160,6 @@ impl core::str::FromStr for CounterPreset {
 
 /// The inputs of one S5 counter box call.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct S5CounterInput {
     /// `CU` (`ZV`), count up on a rising edge.
     pub cu: bool,

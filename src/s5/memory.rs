@@ -56,6 +56,12 @@ impl<const N: usize> TimerMemory<N> {
         }
     }
 
+    /// An area holding `cells`, with the OS ticks applied up to `now` (for restoring a saved
+    /// area, and for the proofs).
+    pub const fn from_cells(cells: [Cell; N], now: u64) -> TimerMemory<N> {
+        TimerMemory { cells, now }
+    }
+
     /// The cells, for inspection (and for the abstraction function of each timer).
     pub const fn cells(&self) -> &[Cell; N] {
         &self.cells

@@ -5,6 +5,7 @@ use super::literal::{LiteralError, LiteralErrorKind};
 
 /// IEC `TIME`: signed 32-bit milliseconds, `T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct Time(i32);
 
 impl Time {
