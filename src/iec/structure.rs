@@ -106,9 +106,14 @@ impl<C: ClockWord> IecTimerOf<C> {
         self.flags & !flag::ALL == 0 && self.abstraction().is_valid()
     }
 
-    /// `PT` as a `TIME` (the latched preset).
+    /// The latched preset `PT` in milliseconds, as stored (no update).
     pub fn pt(&self) -> C {
         self.pt
+    }
+
+    /// `ET` (`ELAPSED`) as stored, without the update that [`IecTimerOps::read_et`] performs.
+    pub fn et(&self) -> C {
+        self.et
     }
 
     /// The update for instruction code `k`: one subtraction and one compare on the hot path.

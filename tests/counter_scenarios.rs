@@ -1,0 +1,237 @@
+//! Counter scenarios (seed 004; semantics brief §4): saturation at both ends for every type,
+//! priorities, the simultaneous-edge case, the R-released-with-CU-held case, and the S5
+//! counters. Reference and packed implementation run side by side.
+
+use plc_timers::counter::packed::PackedCounter;
+use plc_timers::counter::reference::CounterRef;
+use plc_timers::counter::s5::{
+    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+};
+use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput};
+
+struct Both<T> {
+    kind: CounterKind,
+    reference: CounterRef<T>,
+    packed: PackedCounter<T>,
+}
+
+impl<T: CounterInt> Both<T> {
+    fn new(kind: CounterKind) -> Both<T> {
+        Both {
+            kind,
+            reference: CounterRef::new(kind),
+            packed: PackedCounter::new(),
+        }
+    }
+
+    fn call(&mut self, cu: bool, cd: bool, r: bool, ld: bool, pv: T) -> CounterOutput<T> {
+        let input = CounterInput { cu, cd, r, ld, pv };
+        let a = self.reference.call(input);
+        assert_eq!(a, self.packed.call(self.kind, input));
+        a
+    }
+
+    fn pulses_up(&mut self, n: usize, pv: T) -> CounterOutput<T> {
+        let mut last = self.call(false, false, false, false, pv);
+        for _ in 0..n {
+            last = self.call(true, false, false, false, pv);
+            self.call(false, false, false, false, pv);
+        }
+        last
+    }
+
+    fn pulses_down(&mut self, n: usize, pv: T) -> CounterOutput<T> {
+        let mut last = self.call(false, false, false, false, pv);
+        for _ in 0..n {
+            last = self.call(false, true, false, false, pv);
+            self.call(false, false, false, false, pv);
+        }
+        last
+    }
+}
+
+/// CNT-SAT-01 for one type: CTUD loaded with MAX stays at MAX on a count up; loaded with MIN
+/// stays at MIN on a count down (never wraps, never panics).
+fn saturation<T: CounterInt>() {
+    let mut c = Both::<T>::new(CounterKind::Ctud);
+    assert_eq!(c.call(false, false, false, true, T::MAX).cv, T::MAX);
+    assert_eq!(c.pulses_up(3, T::MAX).cv, T::MAX, "{}: up at MAX", T::NAME);
+    assert_eq!(c.pulses_down(1, T::MAX).cv.to_i128(), T::MAX.to_i128() - 1);
+    assert_eq!(c.call(false, false, false, true, T::MIN).cv, T::MIN);
+    assert_eq!(
+        c.pulses_down(3, T::MIN).cv,
+        T::MIN,
+        "{}: down at MIN",
+        T::NAME
+    );
+    assert_eq!(c.pulses_up(1, T::MIN).cv.to_i128(), T::MIN.to_i128() + 1);
+}
+
+#[test]
+fn saturation_at_both_ends_for_every_type() {
+    saturation::<i8>();
+    saturation::<i16>();
+    saturation::<i32>();
+    saturation::<i64>();
+    saturation::<u8>();
+    saturation::<u16>();
+    saturation::<u32>();
+    saturation::<u64>();
+}
+
+/// Seed 004, CTU: "if CU changes from 0 to 1, CTU counts up by 1; Q = 1 if CV >= PV" (the
+/// lecture's diagram uses PV = 3). Counting goes on past PV (matiec stops at PV; this does not).
+#[test]
+fn ctu_seed004_counts_past_pv() {
+    let mut c = Both::<u16>::new(CounterKind::Ctu);
+    assert!(!c.pulses_up(2, 3).qu);
+    assert!(c.pulses_up(1, 3).qu);
+    assert_eq!(c.pulses_up(2, 3).cv, 5);
+}
+
+/// Seed 004, CTD: "if LOAD changes from 0 to 1, PV is written to CV"; counting down to and past
+/// 0; Q = CV <= 0.
+#[test]
+fn ctd_seed004_load_and_count_down() {
+    let mut c = Both::<i16>::new(CounterKind::Ctd);
+    assert_eq!(c.call(false, false, false, true, 2).cv, 2);
+    assert!(!c.pulses_down(1, 2).qd);
+    assert!(c.pulses_down(1, 2).qd);
+    assert_eq!(c.pulses_down(1, 2).cv, -1);
+}
+
+/// CNT-PRIO-01: R over LD over counting, R and LD as levels.
+#[test]
+fn ctud_priorities_r_over_ld_over_count() {
+    let mut c = Both::<i32>::new(CounterKind::Ctud);
+    assert_eq!(c.call(true, false, true, true, 7).cv, 0, "R and LD: R wins");
+    assert_eq!(c.call(false, false, false, true, 7).cv, 7, "LD alone");
+    assert_eq!(
+        c.call(true, false, false, true, 7).cv,
+        7,
+        "LD holds against a rising CU"
+    );
+    assert_eq!(c.call(false, false, true, false, 7).cv, 0, "R as a level");
+}
+
+/// CNT-SIMUL-01: rising CU and CD in the same call leave CV unchanged.
+#[test]
+fn ctud_simultaneous_edges_cancel() {
+    let mut c = Both::<i16>::new(CounterKind::Ctud);
+    c.pulses_up(2, 10);
+    assert_eq!(c.call(true, true, false, false, 10).cv, 2);
+}
+
+/// CNT-EDGE-01: the edge memory is updated while R holds, so releasing R with CU held does not
+/// count (RuSTy's CTUD counts here; this does not).
+#[test]
+fn r_released_with_cu_held_does_not_count() {
+    for kind in [CounterKind::Ctu, CounterKind::Ctud] {
+        let mut c = Both::<i16>::new(kind);
+        c.call(false, false, true, false, 5);
+        c.call(true, false, true, false, 5);
+        assert_eq!(c.call(true, false, false, false, 5).cv, 0, "{kind:?}");
+        c.call(false, false, false, false, 5);
+        assert_eq!(
+            c.call(true, false, false, false, 5).cv,
+            1,
+            "{kind:?}: a new edge counts"
+        );
+    }
+}
+
+/// CNT-INPUTS-01: CTU ignores CD and LD; CTD ignores CU and R.
+#[test]
+fn absent_inputs_are_ignored() {
+    let mut ctu = Both::<i16>::new(CounterKind::Ctu);
+    assert_eq!(ctu.call(false, true, false, true, 9).cv, 0);
+    let mut ctd = Both::<i16>::new(CounterKind::Ctd);
+    assert_eq!(ctd.call(true, false, true, false, 9).cv, 0);
+}
+
+/// QD = CV <= 0 for unsigned types means CV = 0.
+#[test]
+fn unsigned_qd_at_zero() {
+    let mut c = Both::<u8>::new(CounterKind::Ctud);
+    assert!(c.call(false, false, false, false, 1).qd);
+    assert!(!c.pulses_up(1, 1).qd);
+}
+
+/// S5 counters: CV saturates at 999 and 0; S (rising) loads the BCD preset; R resets; Q = CV != 0.
+#[test]
+fn s5_counters_saturate_and_set() {
+    let pv = "C#998".parse::<CounterPreset>().expect("valid");
+    let mut c = S5CounterRef::new(S5CounterKind::SCud);
+    let mut area = CounterMemory::<4>::new();
+    let mut both = |cu, cd, s, r| {
+        let input = S5CounterInput { cu, cd, s, r, pv };
+        let a = c.call(input);
+        assert_eq!(Ok(a), area.call(2, S5CounterKind::SCud, input));
+        a
+    };
+    assert_eq!(both(false, false, true, false).cv, 998);
+    both(true, false, true, false);
+    both(false, false, false, false);
+    let o = both(true, false, false, false);
+    assert_eq!(
+        (o.q, o.cv, o.cv_bcd),
+        (true, 999, 0x0999),
+        "SC-SAT-01: stays at 999"
+    );
+    assert_eq!(both(false, false, false, true).cv, 0);
+    assert!(
+        !both(false, true, false, false).q,
+        "SC-SAT-01: stays at 0, Q = 0"
+    );
+}
+
+/// STL operations on the counter area: CU, CD, S, R, L C, LC C, A C, and a bad counter number.
+#[test]
+fn s5_counter_stl_operations() {
+    let mut area = CounterMemory::<256>::new();
+    let pv = CounterPreset::from_bcd(0x0125).expect("BCD 125");
+    area.set(5, true, pv).expect("C 5");
+    area.cu(5, true).expect("C 5");
+    assert_eq!(
+        (area.load(5), area.load_bcd(5), area.status(5)),
+        (Ok(126), Ok(0x0126), Ok(true))
+    );
+    area.cd(5, true).expect("C 5");
+    area.cd(5, true).expect("C 5");
+    assert_eq!(area.load(5), Ok(125), "CD held: one count");
+    area.reset(5, true).expect("C 5");
+    assert_eq!(area.status(5), Ok(false));
+    assert!(area.cu(256, true).is_err());
+}
+
+/// SC-BCD-01: C# presets and BCD words, with the BCD check.
+#[test]
+fn s5_counter_presets() {
+    assert_eq!(
+        "C#999".parse::<CounterPreset>().map(CounterPreset::value),
+        Ok(999)
+    );
+    assert_eq!(
+        "c#0".parse::<CounterPreset>().map(CounterPreset::value),
+        Ok(0)
+    );
+    assert_eq!(
+        "W#16#0999"
+            .parse::<CounterPreset>()
+            .map(CounterPreset::value),
+        Ok(999)
+    );
+    for bad in [
+        "C#1000",
+        "C#",
+        "C#-1",
+        "C#1.5",
+        "W#16#0A00",
+        "W#16#1000",
+        "X#5",
+        "",
+        "C#99999999999",
+    ] {
+        assert!(bad.parse::<CounterPreset>().is_err(), "{bad}");
+    }
+}

@@ -1,0 +1,383 @@
+//! IEC timer scenarios from seed 001 (S7-1200 system manual) and seed 004: every row of the
+//! "change of PT / IN while running" table (Table 8-20), the clock wrap, negative and maximum PT,
+//! update-on-access, the RT and PT coils, retentivity, and the self-resetting-timer pitfall.
+//! Each runs the reference and the 16-byte structure side by side.
+
+use plc_timers::iec::reference::Reference;
+use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps};
+use plc_timers::time::Time;
+
+struct Both {
+    kind: IecKind,
+    reference: Reference<u32>,
+    structure: IecTimer,
+}
+
+impl Both {
+    fn new(kind: IecKind) -> Both {
+        Both {
+            kind,
+            reference: Reference::new(),
+            structure: IecTimer::new(),
+        }
+    }
+
+    fn call(&mut self, now: u32, input: bool, pt: i32) -> IecOutput {
+        self.call_r(now, input, false, pt)
+    }
+
+    fn call_r(&mut self, now: u32, input: bool, reset: bool, pt: i32) -> IecOutput {
+        let i = IecInput {
+            input,
+            pt: Time::from_millis(pt),
+            reset,
+        };
+        let a = self.reference.call(self.kind, now, i);
+        let b = self.structure.call(self.kind, now, i);
+        assert_eq!(a, b, "reference and structure differ at {now}");
+        assert_eq!(self.reference.state(), self.structure.abstraction());
+        a
+    }
+
+    fn read_q(&mut self, now: u32) -> bool {
+        let a = self.reference.read_q(now);
+        assert_eq!(a, self.structure.read_q(now));
+        a
+    }
+
+    fn read_et(&mut self, now: u32) -> u32 {
+        let a = self.reference.read_et(now);
+        assert_eq!(a, self.structure.read_et(now));
+        a
+    }
+
+    fn rt(&mut self) {
+        self.reference.reset_timer();
+        self.structure.reset_timer();
+    }
+}
+
+fn out(q: bool, et: u32) -> IecOutput {
+    IecOutput { q, et }
+}
+
+/// Table 8-20, TP: "changing PT while the timer runs has no effect".
+#[test]
+fn tp_seed001_table_8_20_pt_change_no_effect() {
+    let mut t = Both::new(IecKind::Tp);
+    t.call(0, true, 100);
+    assert_eq!(t.call(50, true, 10), out(true, 50), "PT 10 ignored");
+    assert_eq!(t.call(100, true, 10), out(false, 100));
+}
+
+/// Table 8-20, TP: "changing IN while the timer runs has no effect".
+#[test]
+fn tp_seed001_table_8_20_in_change_no_effect() {
+    let mut t = Both::new(IecKind::Tp);
+    t.call(0, true, 100);
+    assert_eq!(t.call(20, false, 100), out(true, 20));
+    assert_eq!(
+        t.call(40, true, 100),
+        out(true, 40),
+        "a new rising IN does not retrigger"
+    );
+    assert_eq!(t.call(100, true, 100), out(false, 100));
+}
+
+/// Brief §3 / seed 004: TP's ET stays at PT while IN = 1 after the pulse, 0 once IN = 0.
+#[test]
+fn tp_seed004_et_after_pulse() {
+    let mut t = Both::new(IecKind::Tp);
+    t.call(0, true, 100);
+    assert_eq!(t.call(500, true, 100), out(false, 100));
+    assert_eq!(t.call(600, false, 100), out(false, 0));
+}
+
+/// Table 8-20, TON: "changing PT while the timer runs has no effect".
+#[test]
+fn ton_seed001_table_8_20_pt_change_no_effect() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(0, true, 100);
+    assert_eq!(
+        t.call(60, true, 50),
+        out(false, 60),
+        "PT 50 ignored while running"
+    );
+    assert_eq!(t.call(100, true, 50), out(true, 100));
+}
+
+/// Table 8-20, TON: "changing IN to FALSE while the timer runs resets and stops it".
+#[test]
+fn ton_seed001_table_8_20_in_false_resets() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(0, true, 100);
+    assert_eq!(t.call(60, false, 100), out(false, 0));
+    assert_eq!(t.call(200, true, 100), out(false, 0), "a new start from 0");
+    assert_eq!(t.call(299, true, 100), out(false, 99));
+    assert_eq!(
+        t.call(300, true, 100),
+        out(true, 100),
+        "IEC-EXPIRY-01: Q at ET = PT"
+    );
+}
+
+/// Table 8-20, TOF: "changing PT while the timer runs has no effect".
+#[test]
+fn tof_seed001_table_8_20_pt_change_no_effect() {
+    let mut t = Both::new(IecKind::Tof);
+    t.call(0, true, 100);
+    t.call(10, false, 100);
+    assert_eq!(t.call(50, false, 20), out(true, 40));
+    assert_eq!(t.call(110, false, 20), out(false, 100));
+}
+
+/// Table 8-20, TOF: "changing IN to TRUE while the timer runs resets and stops it".
+#[test]
+fn tof_seed001_table_8_20_in_true_resets() {
+    let mut t = Both::new(IecKind::Tof);
+    t.call(0, true, 100);
+    t.call(10, false, 100);
+    assert_eq!(t.call(50, true, 100), out(true, 0));
+    assert_eq!(
+        t.call(500, true, 100),
+        out(true, 0),
+        "not timing while IN = 1"
+    );
+    t.call(510, false, 100);
+    assert_eq!(
+        t.call(610, false, 100),
+        out(false, 100),
+        "ET holds PT after the delay"
+    );
+}
+
+/// Table 8-20, TONR: "changing PT has no effect while running, but when the timer resumes".
+#[test]
+fn tonr_seed001_table_8_20_pt_on_resume() {
+    let mut t = Both::new(IecKind::Tonr);
+    t.call(0, true, 100);
+    assert_eq!(
+        t.call(40, true, 50),
+        out(false, 40),
+        "PT change ignored while running"
+    );
+    t.call(60, false, 50);
+    assert_eq!(
+        t.call(70, true, 50),
+        out(true, 50),
+        "resumes with PT 50: 60 >= 50, clamped"
+    );
+}
+
+/// Table 8-20, TONR: "IN to FALSE stops without reset; IN back to TRUE continues from the
+/// accumulated time".
+#[test]
+fn tonr_seed001_table_8_20_accumulates() {
+    let mut t = Both::new(IecKind::Tonr);
+    t.call(0, true, 100);
+    assert_eq!(t.call(30, false, 100), out(false, 30));
+    assert_eq!(t.call(1000, false, 100), out(false, 30), "stopped: ET held");
+    t.call(1000, true, 100);
+    assert_eq!(t.call(1069, true, 100), out(false, 99));
+    assert_eq!(t.call(1070, true, 100), out(true, 100));
+    assert_eq!(
+        t.call(2000, false, 100),
+        out(true, 100),
+        "Q stays 1 after IN falls"
+    );
+}
+
+/// Table 8-19, TONR's R: "1 = reset the elapsed time and the Q bit to 0".
+#[test]
+fn tonr_seed001_table_8_19_r_resets() {
+    let mut t = Both::new(IecKind::Tonr);
+    t.call(0, true, 100);
+    t.call(100, true, 100);
+    assert_eq!(t.call_r(110, true, true, 100), out(false, 0));
+    assert_eq!(
+        t.call(120, true, 100),
+        out(false, 0),
+        "TONR-RESUME-01: R released, IN = 1 resumes"
+    );
+    assert_eq!(t.call(220, true, 100), out(true, 100));
+}
+
+/// IEC-WRAP-01 (seed 001: START is subtracted from the CPU timer's current value): a TON started
+/// 100 ms before the 32-bit millisecond clock wraps expires 400 ms after the wrap.
+#[test]
+fn ton_clock_wrap_seed001() {
+    let mut t = Both::new(IecKind::Ton);
+    let start = u32::MAX - 99;
+    t.call(start, true, 500);
+    assert_eq!(t.call(u32::MAX, true, 500), out(false, 99));
+    assert_eq!(t.call(0, true, 500), out(false, 100), "the wrap itself");
+    assert_eq!(t.call(399, true, 500), out(false, 499));
+    assert_eq!(t.call(400, true, 500), out(true, 500));
+}
+
+/// The same through the CLI's clock: t_ms beyond 2^32 is taken modulo 2^32.
+#[test]
+fn tp_clock_wrap_pulse_spans_the_wrap() {
+    let mut t = Both::new(IecKind::Tp);
+    t.call(u32::MAX - 10, true, 50);
+    assert!(t.call(20, true, 50).q);
+    assert_eq!(t.call(39, true, 50), out(false, 50));
+}
+
+/// Seed 001, Table 8-21 note: "a negative PT is set to 0 when the timer instruction executes;
+/// ET is always positive".
+#[test]
+fn negative_pt_seed001_table_8_21_taken_as_zero() {
+    let mut ton = Both::new(IecKind::Ton);
+    assert_eq!(
+        ton.call(5, true, -1000),
+        out(true, 0),
+        "IEC-PT0-01: TON with PT 0 is on at once"
+    );
+    let mut tp = Both::new(IecKind::Tp);
+    assert_eq!(
+        tp.call(5, true, i32::MIN),
+        out(false, 0),
+        "TP with PT 0 gives no pulse"
+    );
+    let mut tof = Both::new(IecKind::Tof);
+    tof.call(0, true, -5);
+    assert_eq!(
+        tof.call(1, false, -5),
+        out(false, 0),
+        "TOF with PT 0 switches off at once"
+    );
+}
+
+/// The maximum PT, T#24d_20h_31m_23s_647ms (seed 001 Table 8-21), across the clock wrap.
+#[test]
+fn maximum_pt_seed001_table_8_21() {
+    let pt = "T#24d_20h_31m_23s_647ms"
+        .parse::<Time>()
+        .expect("valid")
+        .as_millis();
+    let mut t = Both::new(IecKind::Ton);
+    t.call(3_000_000_000, true, pt);
+    let end = 3_000_000_000u32.wrapping_add(i32::MAX as u32);
+    assert_eq!(t.call(end - 1, true, pt), out(false, i32::MAX as u32 - 1));
+    assert_eq!(t.call(end, true, pt), out(true, i32::MAX as u32));
+}
+
+/// Seed 001 "Timer operation": an update happens only when the instruction executes or Q or
+/// ELAPSED is read through the structure; a read updates (IEC-ACCESS-01).
+#[test]
+fn update_on_access_seed001() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(0, true, 100);
+    assert_eq!(t.structure.et(), 0, "no update without an access");
+    assert_eq!(t.read_et(40), 40, "reading ELAPSED updates");
+    assert!(!t.read_q(99));
+    assert!(
+        t.read_q(100),
+        "reading Q updates: Q rises without a box call"
+    );
+    assert_eq!(t.structure.et(), 100);
+}
+
+/// Seed 001 "Timer programming", the self-resetting timer: a normally-closed contact on the
+/// structure's Q in front of the timer reads Q (an update), so the timer is restarted in the same
+/// scan it expires and the Q output is never seen 1; the remedy, a contact on a variable written
+/// by the box's Q output, gives one scan with Q = 1.
+#[test]
+fn self_resetting_timer_pitfall_seed001() {
+    let pt = 100;
+    // The pitfall: IN = NOT "DB".Q, read through the structure just before the call.
+    let mut t = Both::new(IecKind::Ton);
+    let mut seen_q = 0;
+    for scan in 0..100u32 {
+        let now = scan * 7;
+        let input = !t.read_q(now);
+        if t.call(now, input, pt).q {
+            seen_q += 1;
+        }
+    }
+    assert_eq!(seen_q, 0, "Q is never 1 at the box output");
+    // The remedy: IN = NOT "Tag_Q", where Tag_Q is the box's Q output of the previous scan.
+    let mut t = Both::new(IecKind::Ton);
+    let mut tag_q = false;
+    let mut pulses = 0;
+    for scan in 0..100u32 {
+        let now = scan * 7;
+        tag_q = t.call(now, !tag_q, pt).q;
+        if tag_q {
+            pulses += 1;
+        }
+    }
+    assert!(
+        pulses >= 5,
+        "Q is 1 for one scan each period ({pulses} pulses in 700 ms)"
+    );
+}
+
+/// IEC-RT-01: the RT coil zeroes the timer data; a TON with IN still 1 starts again from 0.
+#[test]
+fn rt_coil_seed004_restarts_ton() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(0, true, 100);
+    t.call(150, true, 100);
+    t.rt();
+    assert_eq!(t.reference.state().et, 0);
+    assert_eq!(t.call(160, true, 100), out(false, 0));
+    assert_eq!(t.call(260, true, 100), out(true, 100));
+}
+
+/// IEC-RT-02 (decision): RT on a running TP ends the pulse; on a running TOF ends the delay.
+#[test]
+fn rt_coil_on_running_tp_and_tof() {
+    let mut tp = Both::new(IecKind::Tp);
+    tp.call(0, true, 100);
+    tp.rt();
+    assert_eq!(tp.call(10, false, 100), out(false, 0));
+    let mut tof = Both::new(IecKind::Tof);
+    tof.call(0, true, 100);
+    tof.call(10, false, 100);
+    tof.rt();
+    assert_eq!(
+        tof.call(20, false, 100),
+        out(false, 0),
+        "no falling edge after RT: stays off"
+    );
+}
+
+/// IEC-PT-COIL-01: the PT coil loads the preset, which a running timer uses from its next update.
+#[test]
+fn pt_coil_loads_preset() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(0, true, 100);
+    t.reference.preset_timer(Time::from_millis(30));
+    t.structure.preset_timer(Time::from_millis(30));
+    assert_eq!(
+        t.call(30, true, 100),
+        out(true, 30),
+        "the box's PT input is latched, the coil's is not"
+    );
+}
+
+/// Seed 001 "Retaining timer data": data is lost on RUN-STOP-RUN unless retentive.
+#[test]
+fn retentivity_seed001_run_stop_run() {
+    for retentive in [false, true] {
+        let mut t = Both::new(IecKind::Tonr);
+        t.call(0, true, 100);
+        t.call(40, false, 100);
+        t.reference.run_stop_run(retentive);
+        t.structure.run_stop_run(retentive);
+        let expected = if retentive { 40 } else { 0 };
+        assert_eq!(
+            t.call(1000, false, 100).et,
+            expected,
+            "retentive = {retentive}"
+        );
+    }
+}
+
+/// The structure is the manual's 16 bytes.
+#[test]
+fn iec_timer_is_16_bytes_seed001() {
+    assert_eq!(std::mem::size_of::<IecTimer>(), 16);
+}

@@ -1,0 +1,383 @@
+//! S5 timer scenarios, one per sentence of the manuals (seed 000 §9.1-9.7, seed 003 §7). Each
+//! scenario runs the reference and the timer memory area side by side and checks both.
+
+use plc_timers::s5::memory::TimerMemory;
+use plc_timers::s5::reference::S5TimerRef;
+use plc_timers::s5::{S5Input, S5Kind, S5Output};
+use plc_timers::time::{S5Time, TimeBase};
+
+/// A reference timer and a one-timer area driven together.
+struct Both {
+    kind: S5Kind,
+    reference: S5TimerRef,
+    area: TimerMemory<1>,
+    tv: S5Time,
+}
+
+impl Both {
+    fn new(kind: S5Kind, tv: &str) -> Both {
+        let tv = tv.parse().expect("valid TV literal");
+        Both {
+            kind,
+            reference: S5TimerRef::new(kind),
+            area: TimerMemory::new(),
+            tv,
+        }
+    }
+
+    /// Executes at `t` with S, R (FR = 0); asserts both implementations agree.
+    fn at(&mut self, t: u64, s: bool, r: bool) -> S5Output {
+        self.with_fr(t, s, r, false)
+    }
+
+    fn with_fr(&mut self, t: u64, s: bool, r: bool, fr: bool) -> S5Output {
+        let input = S5Input {
+            s,
+            r,
+            fr,
+            tv: self.tv,
+        };
+        let a = self.reference.call(t, input);
+        let b = self.area.call(0, self.kind, t, input).expect("timer 0");
+        assert_eq!(a, b, "reference and optimized differ at t = {t}");
+        a
+    }
+}
+
+/// §9.3: "starts the timer when S has a rising edge … runs with the value at TV as long as S = 1
+/// … while the timer runs, Q = 1".
+#[test]
+fn s_pulse_seed000_9_3_runs_while_s_and_q_is_1() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
+    assert!(t.at(0, true, false).q);
+    let o = t.at(30, true, false);
+    assert_eq!((o.q, o.bi), (true, 2));
+    assert!(!t.at(50, true, false).q, "the programmed time has run out");
+}
+
+/// §9.3: "if S changes from 1 to 0 before the time has elapsed, the timer stops; Q = 0".
+#[test]
+fn s_pulse_seed000_9_3_s_falling_stops() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
+    t.at(0, true, false);
+    let o = t.at(20, false, false);
+    assert!(!o.q);
+    assert_eq!(
+        t.at(100, false, false).bi,
+        3,
+        "S5TMR-STOP-01: the stopped value stays readable"
+    );
+}
+
+/// §9.3: "a change of signal state is always required to enable the timer": S held at 1 after
+/// the pulse does not start it again.
+#[test]
+fn s_pulse_seed000_9_3_needs_signal_change() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#20MS");
+    t.at(0, true, false);
+    assert!(!t.at(20, true, false).q);
+    assert!(!t.at(100, true, false).q, "no new edge, no new pulse");
+    t.at(110, false, false);
+    assert!(t.at(120, true, false).q, "a new rising edge starts it");
+}
+
+/// §9.3: "the timer is reset if R changes from 0 to 1 while the timer runs; the time value and
+/// the time base are also reset to zero".
+#[test]
+fn s_pulse_seed000_9_3_reset_while_running_clears_value_and_base() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#5S"); // 500 x 10 ms
+    t.at(0, true, false);
+    let o = t.at(10, true, true);
+    assert_eq!(
+        o,
+        S5Output {
+            q: false,
+            bi: 0,
+            bcd: 0x0000
+        }
+    );
+}
+
+/// §9.3: "R = 1 has no effect if the timer is not running": Q stays 0 and a later start works.
+#[test]
+fn s_pulse_seed000_9_3_reset_while_stopped_no_effect_on_q() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
+    assert!(!t.at(0, false, true).q);
+    assert!(t.at(10, true, false).q);
+}
+
+/// §9.4: "the timer keeps running … even if S changes to 0 before the time has elapsed".
+#[test]
+fn s_pext_seed000_9_4_runs_on_when_s_falls() {
+    let mut t = Both::new(S5Kind::SPext, "S5T#50MS");
+    t.at(0, true, false);
+    assert!(t.at(10, false, false).q);
+    assert!(t.at(49, false, false).q);
+    assert!(!t.at(50, false, false).q);
+}
+
+/// §9.4: "the timer is restarted with the programmed value if S changes from 0 to 1 while the
+/// timer runs".
+#[test]
+fn s_pext_seed000_9_4_retriggers() {
+    let mut t = Both::new(S5Kind::SPext, "S5T#50MS");
+    t.at(0, true, false);
+    t.at(10, false, false);
+    let o = t.at(30, true, false);
+    assert_eq!((o.q, o.bi), (true, 5), "restarted with the full value");
+    assert!(t.at(79, true, false).q);
+    assert!(!t.at(80, true, false).q);
+}
+
+/// §9.4: R while running resets it, value and base cleared.
+#[test]
+fn s_pext_seed000_9_4_reset() {
+    let mut t = Both::new(S5Kind::SPext, "S5T#1M"); // 600 x 100 ms
+    t.at(0, true, false);
+    assert_eq!(
+        t.at(5, false, true),
+        S5Output {
+            q: false,
+            bi: 0,
+            bcd: 0
+        }
+    );
+}
+
+/// §9.5: "Q = 1 when the time has elapsed without error, S is still 1 and R stays 0".
+#[test]
+fn s_odt_seed000_9_5_q_after_time_while_s() {
+    let mut t = Both::new(S5Kind::SOdt, "S5T#50MS");
+    assert!(!t.at(0, true, false).q);
+    assert!(!t.at(40, true, false).q);
+    assert!(t.at(50, true, false).q);
+    assert!(t.at(500, true, false).q);
+    assert!(!t.at(510, false, false).q, "S = 0: Q = 0");
+}
+
+/// §9.5: "if S changes from 1 to 0 while the timer runs, it stops; Q = 0".
+#[test]
+fn s_odt_seed000_9_5_s_falling_stops() {
+    let mut t = Both::new(S5Kind::SOdt, "S5T#50MS");
+    t.at(0, true, false);
+    assert!(!t.at(20, false, false).q);
+    assert!(!t.at(100, false, false).q, "stopped: never expires");
+}
+
+/// §9.5: "the timer is also reset if R = 1 while the timer is not running" (clears an expired Q).
+#[test]
+fn s_odt_seed000_9_5_reset_when_not_running() {
+    let mut t = Both::new(S5Kind::SOdt, "S5T#20MS");
+    t.at(0, true, false);
+    assert!(t.at(20, true, false).q);
+    assert!(!t.at(30, true, true).q);
+    assert!(
+        !t.at(40, true, false).q,
+        "no new edge after R: stays off (S5TMR-R-01)"
+    );
+}
+
+/// §9.5 and decision SD-RESTART-01: after expiry a restart needs S to fall and rise again.
+#[test]
+fn s_odt_restart_after_expiry_needs_new_edge() {
+    let mut t = Both::new(S5Kind::SOdt, "S5T#20MS");
+    t.at(0, true, false);
+    assert!(t.at(20, true, false).q);
+    t.at(30, false, false);
+    assert!(!t.at(40, true, false).q);
+    assert!(t.at(60, true, false).q);
+}
+
+/// §9.6: "Q = 1 after the time has elapsed, whatever S does, as long as R stays 0".
+#[test]
+fn s_odts_seed000_9_6_q_latched_until_r() {
+    let mut t = Both::new(S5Kind::SOdts, "S5T#30MS");
+    t.at(0, true, false);
+    t.at(10, false, false);
+    assert!(t.at(30, false, false).q);
+    assert!(t.at(1000, false, false).q);
+    assert!(!t.at(1010, false, true).q, "§9.6: R resets whatever S is");
+}
+
+/// §9.6: "if S changes from 0 to 1 while the timer runs, it restarts with the programmed value".
+#[test]
+fn s_odts_seed000_9_6_retriggers() {
+    let mut t = Both::new(S5Kind::SOdts, "S5T#30MS");
+    t.at(0, true, false);
+    t.at(10, false, false);
+    let o = t.at(20, true, false);
+    assert_eq!((o.q, o.bi), (false, 3));
+    assert!(!t.at(49, true, false).q);
+    assert!(t.at(50, true, false).q);
+}
+
+/// §9.6: R resets "regardless of the RLO at S" (S = 1 held).
+#[test]
+fn s_odts_seed000_9_6_reset_with_s_held() {
+    let mut t = Both::new(S5Kind::SOdts, "S5T#20MS");
+    t.at(0, true, false);
+    assert!(t.at(20, true, false).q);
+    assert_eq!(
+        t.at(30, true, true),
+        S5Output {
+            q: false,
+            bi: 0,
+            bcd: 0
+        }
+    );
+}
+
+/// §9.7: "starts on a falling edge at S … Q = 1 if S = 1 or the timer runs".
+#[test]
+fn s_offdt_seed000_9_7_falling_edge_and_q() {
+    let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
+    assert!(!t.at(0, false, false).q, "S never 1, never started");
+    assert!(t.at(5, true, false).q, "Q = 1 while S = 1");
+    let o = t.at(15, false, false);
+    assert_eq!((o.q, o.bi), (true, 3), "falling S starts the time");
+    assert!(t.at(39, false, false).q);
+    assert!(!t.at(40, false, false).q);
+}
+
+/// §9.7: "the timer is reset if S changes from 0 to 1 while it runs; it starts again only when S
+/// changes from 1 to 0".
+#[test]
+fn s_offdt_seed000_9_7_rising_s_while_running_stops() {
+    let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
+    t.at(0, true, false);
+    t.at(5, false, false);
+    assert!(t.at(15, true, false).q, "Q follows S = 1");
+    assert!(
+        t.at(100, true, false).q,
+        "not running: no expiry while S = 1"
+    );
+    t.at(105, false, false);
+    assert!(t.at(120, false, false).q);
+    assert!(!t.at(140, false, false).q);
+}
+
+/// §9.7 with decision SF-R-01: R while running resets; with S = 1, Q is 0 only while R = 1.
+#[test]
+fn s_offdt_reset_and_s_held() {
+    let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
+    t.at(0, true, false);
+    t.at(5, false, false);
+    assert!(!t.at(10, false, true).q);
+    assert!(!t.at(100, false, false).q, "reset: no time left");
+    assert!(
+        !t.at(110, true, true).q,
+        "R = 1 holds Q at 0 even with S = 1 (seed 003 §7.1.3)"
+    );
+    assert!(t.at(120, true, false).q, "R released, S = 1: Q = 1");
+}
+
+/// Seed 003 §7.1.3: "while the RLO at R T n is 1, a check of the timer for 1 gives 0".
+#[test]
+fn r_level_seed003_7_1_3_holds_q_at_zero() {
+    for kind in S5Kind::ALL {
+        let mut t = Both::new(kind, "S5T#20MS");
+        for (time, s) in [(0, true), (10, false), (20, true), (30, true), (40, false)] {
+            assert!(!t.at(time, s, true).q, "{kind:?} at {time}");
+        }
+    }
+}
+
+/// Seed 003 §7: "if the time value is 0, the timer stays active until the CPU, processing the
+/// timer, finds the time elapsed": active in the starting execution, run out at the next.
+#[test]
+fn value_zero_seed003_7_active_until_next_processing() {
+    let mut sp = Both::new(S5Kind::SPulse, "S5T#0MS");
+    assert!(sp.at(0, true, false).q, "active in the starting call");
+    assert!(
+        !sp.at(0, true, false).q,
+        "run out when processed again, even with no tick"
+    );
+    let mut sd = Both::new(S5Kind::SOdt, "S5T#0MS");
+    assert!(!sd.at(0, true, false).q);
+    assert!(sd.at(0, true, false).q);
+}
+
+/// Seed 000 §9.1: the OS decrements the value by one unit per interval of the base: every base,
+/// BI after each tick, and expiry exactly on the v-th tick after the start (S5TMR-TICK-01).
+#[test]
+fn time_base_model_seed000_9_1_all_bases() {
+    for (tv, base) in [
+        ("W#16#0003", TimeBase::Ms10),
+        ("W#16#1003", TimeBase::Ms100),
+        ("W#16#2003", TimeBase::S1),
+        ("W#16#3003", TimeBase::S10),
+    ] {
+        let b = u64::from(base.millis());
+        let mut t = Both::new(S5Kind::SOdt, tv);
+        // Start a little after a tick: the first tick comes less than one base later.
+        let start = 5 * b + 1;
+        assert_eq!(t.at(start, true, false).bcd >> 12, u16::from(base.bits()));
+        assert_eq!(t.at(6 * b - 1, true, false).bi, 3, "{base:?}: no tick yet");
+        assert_eq!(t.at(6 * b, true, false).bi, 2, "{base:?}: first tick");
+        assert_eq!(t.at(7 * b, true, false).bi, 1, "{base:?}: second tick");
+        assert!(!t.at(8 * b - 1, true, false).q);
+        let o = t.at(8 * b, true, false);
+        assert_eq!(
+            (o.q, o.bi),
+            (true, 0),
+            "{base:?}: the third tick runs it out"
+        );
+    }
+}
+
+/// A 1 s base run to expiry: S5T#2M7S = W#16#2127 (Fig. 9-1), 127 ticks of 1 s.
+#[test]
+fn one_second_base_seed000_fig_9_1_runs_to_expiry() {
+    let mut t = Both::new(S5Kind::SPulse, "W#16#2127");
+    let o = t.at(0, true, false);
+    assert_eq!((o.q, o.bi, o.bcd), (true, 127, 0x2127));
+    assert_eq!(t.at(100_000, true, false).bcd, 0x2027);
+    assert!(t.at(126_999, true, false).q);
+    assert!(!t.at(127_000, true, false).q);
+}
+
+/// A 10 s base run to expiry: the maximum, 999 ticks of 10 s (S5T#2H46M30S).
+#[test]
+fn ten_second_base_runs_to_expiry_at_9990_s() {
+    let mut t = Both::new(S5Kind::SOdts, "S5T#2H46M30S");
+    assert_eq!(t.at(0, true, false).bcd, 0x3999);
+    assert_eq!(t.at(9_989_999, false, false).bi, 1);
+    assert!(t.at(9_990_000, false, false).q);
+}
+
+/// Decision S5TMR-FR-01: a rising FR restarts a running S_PEXT with S held at 1, as a new S edge
+/// would; without FR, S held does nothing.
+#[test]
+fn fr_enable_restarts_without_s_edge() {
+    let mut t = Both::new(S5Kind::SPext, "S5T#50MS");
+    t.at(0, true, false);
+    assert_eq!(t.at(30, true, false).bi, 2);
+    assert_eq!(t.with_fr(31, true, false, true).bi, 5, "FR edge: reloaded");
+    assert_eq!(
+        t.with_fr(35, true, false, true).bi,
+        5,
+        "FR held: no second edge"
+    );
+}
+
+/// STL operations on the area (`L T`, `LC T`, `A T`) and R clearing value and base for L/LC.
+#[test]
+fn stl_operations_load_and_status() {
+    let mut area = TimerMemory::<256>::new();
+    let tv: S5Time = "W#16#2127".parse().expect("valid");
+    area.start(7, S5Kind::SOdt, true, tv).expect("T 7");
+    area.advance_to(3_000);
+    assert_eq!(area.load(7), Ok(124));
+    assert_eq!(area.load_bcd(7), Ok(0x2124));
+    assert_eq!(area.status(7), Ok(false));
+    area.reset(7, true).expect("T 7");
+    assert_eq!(
+        (area.load(7), area.load_bcd(7)),
+        (Ok(0), Ok(0)),
+        "S5TMR-LOAD-01"
+    );
+    assert!(
+        area.load(256).is_err(),
+        "T 256 does not exist in a 256-timer area"
+    );
+}
