@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
+use plc_timers::time::{S5Time, Time};
 use plc_timers::trace::{self, BlockOptions, Implementation, PresetOption, TraceError};
 
 /// Siemens S7 timers and counters: reference semantics for traces.
@@ -24,6 +25,19 @@ enum Command {
     /// Compare a trace that carries outputs (another implementation's) with the reference;
     /// exit status 1 at the first difference.
     Check(BlockArgs),
+    /// Convert an S5TIME literal or word: prints `W#16#XXXX <ms> <S5T# literal>`.
+    #[command(name = "s5time")]
+    S5time {
+        /// `S5T#…`, `S5TIME#…` or `W#16#…`.
+        #[arg(allow_hyphen_values = true)]
+        value: String,
+    },
+    /// Convert a TIME literal: prints `<ms> <T# literal>`.
+    Time {
+        /// `T#…`, `TIME#…` or whole milliseconds (may be negative).
+        #[arg(allow_hyphen_values = true)]
+        value: String,
+    },
 }
 
 #[derive(Args, Debug)]
@@ -102,6 +116,24 @@ fn main() -> ExitCode {
         }
     };
     match cli.command {
+        Command::S5time { value } => match value.parse::<S5Time>() {
+            // The word uses the automatic base (trace contract).
+            Ok(t) => match S5Time::from_millis(u64::from(t.as_millis())) {
+                Ok(auto) => {
+                    println!("W#16#{:04X} {} {}", auto.to_word(), auto.as_millis(), auto);
+                    ExitCode::SUCCESS
+                }
+                Err(e) => fail(e),
+            },
+            Err(e) => fail(e),
+        },
+        Command::Time { value } => match value.parse::<Time>() {
+            Ok(t) => {
+                println!("{} {}", t.as_millis(), t);
+                ExitCode::SUCCESS
+            }
+            Err(e) => fail(e),
+        },
         Command::Run(args) => {
             let result = args.block().and_then(|mut block| {
                 let stdout = io::stdout().lock();

@@ -93,7 +93,7 @@ pub(crate) fn parse_pv<T: CounterInt>(text: &str) -> Result<T, CellError> {
     let error = || CellError {
         input: "PV",
         message: format!(
-            "`{text}` is not a {} preset; PV is a whole number from {} to {}",
+            "`{text}` is not a valid {} preset; PV is a whole number from {} to {}",
             T::NAME,
             T::MIN.to_i128(),
             T::MAX.to_i128()
