@@ -152,6 +152,75 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) {
     }
 }
 
+/// Seed 001 Table 8-20, all kinds: while a timer runs, a change of PT has no effect (the call
+/// gives the same result whatever PT is: IEC-PT-LATCH-01); TP ignores IN while running
+/// (TP-IN-01); TON resets and stops on IN = 0 (TON-IN-01); TOF resets and stops on IN = 1
+/// (TOF-IN-01); TONR stops without reset on IN = 0 (TONR-IN-01).
+pub fn prop_table_8_20<C: ClockWord>(
+    state: IecState<C>,
+    kind: IecKind,
+    now: C,
+    input: IecInput,
+    other_pt: Time,
+) {
+    // "While the timer runs": started, of this kind, not yet at PT at `now`, and with the stored
+    // IN a running timer of this kind has (1 for TON and TONR, 0 for TOF): the reachable states.
+    let stored_in_consistent = match kind {
+        IecKind::Tp => true,
+        IecKind::Ton | IecKind::Tonr => state.input,
+        IecKind::Tof => !state.input,
+    };
+    if !state.is_valid()
+        || !state.running
+        || state.kind != Some(kind)
+        || !stored_in_consistent
+        || now.elapsed_since(state.start) >= state.pt
+    {
+        return;
+    }
+    let step = |input: IecInput| {
+        let mut r = Reference { state };
+        let o = r.call(kind, now, input);
+        (o, r.state)
+    };
+    let (o, after) = step(input);
+    assert_eq!(
+        step(IecInput {
+            pt: other_pt,
+            ..input
+        }),
+        (o, after),
+        "IEC-PT-LATCH-01: PT ignored while running"
+    );
+    match kind {
+        IecKind::Tp => {
+            let (o2, a2) = step(IecInput {
+                input: !input.input,
+                ..input
+            });
+            assert_eq!(
+                (o2, a2.running, a2.start, a2.pt),
+                (o, after.running, after.start, after.pt),
+                "TP-IN-01"
+            );
+        }
+        IecKind::Ton if !input.input => {
+            assert!(!after.running && !o.q && o.et == C::default(), "TON-IN-01");
+        }
+        IecKind::Tof if input.input => {
+            assert!(!after.running && o.q && o.et == C::default(), "TOF-IN-01");
+        }
+        IecKind::Tonr if !input.input && !input.reset => {
+            let accumulated = now.elapsed_since(state.start);
+            assert!(
+                !after.running && o.et == accumulated,
+                "TONR-IN-01: stops, ET keeps the accumulated time"
+            );
+        }
+        _ => {}
+    }
+}
+
 /// Every valid state on the 4-bit clock: kind (or none) x IN x running x Q x START (any when
 /// running, 0 otherwise) x PT x ET <= PT: 46 240 states.
 pub fn all_states_u4() -> Vec<IecState<U4>> {
@@ -245,6 +314,9 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
                     for &op in ops {
                         prop_step_equivalence(state, op);
                         prop_invariants(state, op);
+                        if let Op::Call(kind, now, input) = op {
+                            prop_table_8_20(state, kind, now, input, Time::from_millis(3));
+                        }
                     }
                 }
             });
@@ -311,6 +383,9 @@ proptest! {
     fn proptest_u32_step_equivalence_and_invariants(state in arb_state_u32(), op in arb_op_u32()) {
         prop_step_equivalence(state, op);
         prop_invariants(state, op);
+        if let Op::Call(kind, now, input) = op {
+            prop_table_8_20(state, kind, now, input, Time::from_millis(7));
+        }
     }
 }
 
@@ -355,6 +430,23 @@ mod kani_harnesses {
     #[kani::proof]
     fn kani_step_equivalence() {
         prop_step_equivalence(any_state(), any_op());
+    }
+
+    /// Table 8-20 on the 32-bit clock, every running state, input and pair of presets.
+    #[kani::proof]
+    fn kani_table_8_20() {
+        let input = IecInput {
+            input: kani::any(),
+            pt: Time::from_millis(kani::any()),
+            reset: kani::any(),
+        };
+        prop_table_8_20(
+            any_state(),
+            kani::any(),
+            kani::any(),
+            input,
+            Time::from_millis(kani::any()),
+        );
     }
 
     /// The IEC invariants on the 32-bit clock, every state and operation.

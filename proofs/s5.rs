@@ -142,6 +142,55 @@ pub fn prop_expiry_on_vth_tick(kind: S5Kind, value: u16, base: TimeBase) {
     assert_eq!(r.state.q, !state.q, "S5TMR-EXPIRE-01: expiry inverts Q");
 }
 
+/// The per-kind invariant every reachable state satisfies (seed 000 §9.3-9.7): the pulses have
+/// Q exactly while running (SP-Q-01, SE-Q-01); S_ODT's Q needs S = 1 and the time run out
+/// (SD-Q-01); S_ODTS's Q comes only after the time (SS-Q-01); S_OFFDT has Q while running and
+/// otherwise only with S = 1 (SF-Q-01).
+pub fn kind_invariant(kind: S5Kind, st: &S5State) -> bool {
+    match kind {
+        S5Kind::SPulse | S5Kind::SPext => st.q == st.running,
+        S5Kind::SOdt => !st.q || (st.s_prev && !st.running),
+        S5Kind::SOdts => !(st.q && st.running),
+        S5Kind::SOffdt => (!st.running || st.q) && (!st.q || st.s_prev || st.running),
+    }
+}
+
+/// SP-Q-01 .. SF-Q-01, SP-STOP-01, SD-STOP-01, SE-RUN-ON-01, SS-RUN-ON-01: from a state that
+/// satisfies the kind's invariant, a step keeps it, and the kind's rules hold: S_PULSE and S_ODT
+/// stop when S = 0; S_PEXT and S_ODTS run on when S falls (unless the ticks run them out);
+/// S_OFFDT's Q is S or running when R = 0.
+pub fn prop_kind_rules(kind: S5Kind, state: S5State, ticks: u64, input: S5Input) {
+    if !state.is_valid() || !kind_invariant(kind, &state) {
+        return;
+    }
+    let (after, _) = reference_step(kind, state, ticks, input);
+    assert!(
+        kind_invariant(kind, &after),
+        "{kind:?}: invariant broken by {input:?} from {state:?}"
+    );
+    if input.r {
+        return;
+    }
+    match kind {
+        S5Kind::SPulse | S5Kind::SOdt if !input.s => {
+            assert!(
+                !after.running,
+                "SP-STOP-01 / SD-STOP-01: S = 0 stops the timer"
+            );
+        }
+        S5Kind::SPext | S5Kind::SOdts
+            if state.running && !input.s && ticks < u64::from(state.value) && !input.fr =>
+        {
+            assert!(
+                after.running,
+                "SE-RUN-ON-01 / SS-RUN-ON-01: runs on when S falls"
+            );
+        }
+        S5Kind::SOffdt => assert_eq!(after.q, input.s || after.running, "SF-Q-01"),
+        _ => {}
+    }
+}
+
 /// Every S5 state: value 0..=999, four bases, four flags (64 000 states).
 pub fn all_states() -> impl Iterator<Item = S5State> {
     (0..=999u16).flat_map(|value| {
@@ -204,6 +253,7 @@ fn exhaustive_step_equivalence_and_invariants() {
                         for_all_inputs(|ticks, input| {
                             prop_step_equivalence(kind, state, ticks, input);
                             prop_invariants(kind, state, ticks, input);
+                            prop_kind_rules(kind, state, ticks, input);
                         });
                     }
                 }
@@ -395,6 +445,12 @@ mod kani_harnesses {
     #[kani::proof]
     fn kani_invariants() {
         prop_invariants(kani::any(), any_state(), kani::any(), any_input());
+    }
+
+    /// The per-kind rules over every state, tick count and input.
+    #[kani::proof]
+    fn kani_kind_rules() {
+        prop_kind_rules(kani::any(), any_state(), kani::any(), any_input());
     }
 
     /// S5TMR-TICK-01 for every kind, value and base.
