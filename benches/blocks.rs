@@ -1,0 +1,262 @@
+//! Reference vs optimized, in the same run: what a soft-PLC pays per scan for its timers and
+// criterion_group! generates an undocumented function.
+#![allow(missing_docs)]
+//! counters. `cargo bench`; the README's "Performance" table reports one run.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
+use plc_timers::counter::reference::CounterRef;
+use plc_timers::counter::s5::{CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef};
+use plc_timers::counter::{CounterInput, CounterKind, CounterOps};
+use plc_timers::iec::reference::Reference;
+use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
+use plc_timers::s5::cell::Cell;
+use plc_timers::s5::memory::TimerMemory;
+use plc_timers::s5::reference::S5TimerRef;
+use plc_timers::s5::{S5Input, S5Kind};
+use plc_timers::time::{S5Time, Time, TimeBase};
+
+/// A small deterministic generator (xorshift), so both implementations see the same data.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
+fn one_step(c: &mut Criterion) {
+    let mut g = c.benchmark_group("one step");
+    let tv = S5Time::from_word(0x0500).expect("valid");
+    for kind in S5Kind::ALL {
+        g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
+            let mut t = S5TimerRef::new(kind);
+            let mut now = 0u64;
+            b.iter(|| {
+                now += 10;
+                let s = now % 700 < 400;
+                black_box(t.call(black_box(now), S5Input::new(s, false, tv)))
+            })
+        });
+        g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
+            let mut area = TimerMemory::<1>::new();
+            let mut now = 0u64;
+            b.iter(|| {
+                now += 10;
+                let s = now % 700 < 400;
+                black_box(area.call(0, kind, black_box(now), S5Input::new(s, false, tv)))
+            })
+        });
+    }
+    let pt = Time::from_millis(300);
+    for kind in IecKind::ALL {
+        g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
+            let mut t = Reference::<u32>::new();
+            let mut now = 0u32;
+            b.iter(|| {
+                now = now.wrapping_add(7);
+                black_box(t.call(kind, black_box(now), IecInput::new(now % 1000 < 600, pt)))
+            })
+        });
+        g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
+            let mut t = IecTimer::new();
+            let mut now = 0u32;
+            b.iter(|| {
+                now = now.wrapping_add(7);
+                black_box(t.call(kind, black_box(now), IecInput::new(now % 1000 < 600, pt)))
+            })
+        });
+    }
+    for kind in CounterKind::ALL {
+        g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
+            let mut ctr = CounterRef::<i16>::new(kind);
+            let mut i = 0u32;
+            b.iter(|| {
+                i += 1;
+                let input = CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, r: i % 97 == 0, ld: false, pv: 10 };
+                black_box(ctr.call(black_box(input)))
+            })
+        });
+        g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
+            let mut ctr = PackedCounter::<i16>::new();
+            let mut i = 0u32;
+            b.iter(|| {
+                i += 1;
+                let input = CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, r: i % 97 == 0, ld: false, pv: 10 };
+                black_box(ctr.call(kind, black_box(input)))
+            })
+        });
+    }
+    let pv = CounterPreset::new(5).expect("valid");
+    for kind in S5CounterKind::ALL {
+        g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
+            let mut ctr = S5CounterRef::new(kind);
+            let mut i = 0u32;
+            b.iter(|| {
+                i += 1;
+                let input = S5CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, s: i % 50 == 0, r: false, pv };
+                black_box(ctr.call(black_box(input)))
+            })
+        });
+        g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
+            let mut area = CounterMemory::<1>::new();
+            let mut i = 0u32;
+            b.iter(|| {
+                i += 1;
+                let input = S5CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, s: i % 50 == 0, r: false, pv };
+                black_box(area.call(0, kind, black_box(input)))
+            })
+        });
+    }
+    g.finish();
+}
+
+/// A realistic timer area: a third stopped, the rest running on a mix of bases and values.
+fn timer_states(n: usize) -> Vec<S5TimerRef> {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let kinds = S5Kind::ALL;
+    (0..n)
+        .map(|i| {
+            let kind = kinds[i % 5];
+            let mut t = S5TimerRef::new(kind);
+            if rng.next() % 3 != 0 {
+                let units = (rng.next() % 999 + 1) as u16;
+                let base = TimeBase::from_bits((rng.next() % 4) as u8);
+                let tv = S5Time::new(units, base).expect("units <= 999");
+                let s = !kind.starts_on_falling_edge();
+                if !s {
+                    t.execute(S5Input::new(true, false, tv));
+                }
+                t.execute(S5Input::new(s, false, tv));
+            }
+            t
+        })
+        .collect()
+}
+
+fn area_tick<const N: usize>(c: &mut Criterion, name: &str) {
+    let refs = timer_states(N);
+    let mut cells = Box::new([Cell::RESET; N]);
+    for (cell, r) in cells.iter_mut().zip(&refs) {
+        *cell = Cell::from_state(r.state).expect("valid state");
+    }
+    let mut g = c.benchmark_group(format!("timer area tick, {name} timers"));
+    g.throughput(Throughput::Bytes((N * 2) as u64));
+    g.bench_function("reference", |b| {
+        let mut refs = refs.clone();
+        b.iter(|| {
+            // The OS tick of the 10 ms base: every timer on that base loses one unit.
+            for t in refs.iter_mut() {
+                if t.state.base == TimeBase::Ms10 {
+                    t.tick(1);
+                }
+            }
+            black_box(&refs);
+        })
+    });
+    g.bench_function("optimized", |b| {
+        let mut area = Box::new(TimerMemory::<N>::from_cells(*cells, 0));
+        b.iter(|| {
+            area.tick(TimeBase::Ms10, 1);
+            black_box(&area);
+        })
+    });
+    g.bench_function("copy of the area (baseline)", |b| {
+        let src = cells.clone();
+        let mut dst = Box::new([Cell::RESET; N]);
+        b.iter(|| {
+            dst.copy_from_slice(black_box(&src[..]));
+            black_box(&dst);
+        })
+    });
+    g.finish();
+}
+
+fn area_ticks(c: &mut Criterion) {
+    area_tick::<256>(c, "256");
+    area_tick::<65_536>(c, "65 536");
+}
+
+const TONS: usize = 10_000;
+
+fn ton_scan(c: &mut Criterion) {
+    let mut rng = Rng(42);
+    let inputs: Vec<bool> = (0..TONS).map(|_| rng.next() % 4 != 0).collect();
+    let pts: Vec<Time> = (0..TONS).map(|_| Time::from_millis((rng.next() % 5_000) as i32)).collect();
+    let mut g = c.benchmark_group("scan of 10 000 TON");
+    g.throughput(Throughput::Elements(TONS as u64));
+    g.bench_function("reference", |b| {
+        let mut timers = vec![Reference::<u32>::new(); TONS];
+        let mut now = 0u32;
+        b.iter(|| {
+            now = now.wrapping_add(10);
+            for ((t, &input), &pt) in timers.iter_mut().zip(&inputs).zip(&pts) {
+                black_box(t.call(IecKind::Ton, now, IecInput::new(input, pt)));
+            }
+        })
+    });
+    g.bench_function("optimized", |b| {
+        let mut timers = vec![IecTimer::new(); TONS];
+        let mut now = 0u32;
+        b.iter(|| {
+            now = now.wrapping_add(10);
+            for ((t, &input), &pt) in timers.iter_mut().zip(&inputs).zip(&pts) {
+                black_box(t.call(IecKind::Ton, now, IecInput::new(input, pt)));
+            }
+        })
+    });
+    g.finish();
+}
+
+const WORDS: usize = 157; // 10 048 counters
+
+fn counter_bank(c: &mut Criterion) {
+    let mut rng = Rng(7);
+    // 64 scans of random edges: every input bit random, R and LD rare.
+    let scans: Vec<[[u64; WORDS]; 4]> = (0..64)
+        .map(|_| {
+            let mut s = [[0u64; WORDS]; 4];
+            for w in 0..WORDS {
+                s[0][w] = rng.next();
+                s[1][w] = rng.next();
+                s[2][w] = rng.next() & rng.next() & rng.next() & rng.next();
+                s[3][w] = rng.next() & rng.next() & rng.next() & rng.next();
+            }
+            s
+        })
+        .collect();
+    let n = 64 * WORDS;
+    let mut g = c.benchmark_group("bank of 10 048 CTUD INT");
+    g.throughput(Throughput::Elements(n as u64));
+    g.bench_function("reference", |b| {
+        let mut counters = vec![CounterRef::<i16>::new(CounterKind::Ctud); n];
+        let mut k = 0;
+        b.iter(|| {
+            let s = &scans[k % scans.len()];
+            k += 1;
+            for (i, ctr) in counters.iter_mut().enumerate() {
+                let bit = |w: &[u64; WORDS]| w[i / 64] >> (i % 64) & 1 != 0;
+                black_box(ctr.call(CounterInput { cu: bit(&s[0]), cd: bit(&s[1]), r: bit(&s[2]), ld: bit(&s[3]), pv: 100 }));
+            }
+        })
+    });
+    g.bench_function("optimized", |b| {
+        let mut bank = Box::new(CounterBank::<i16, WORDS>::new());
+        let mut k = 0;
+        b.iter(|| {
+            let s = &scans[k % scans.len()];
+            k += 1;
+            bank.scan(BankInputs { cu: &s[0], cd: &s[1], r: &s[2], ld: &s[3] }, 100);
+            black_box(&bank);
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, one_step, area_ticks, ton_scan, counter_bank);
+criterion_main!(benches);
