@@ -1,14 +1,17 @@
 //! Reference vs optimized, in the same run: what a soft-PLC pays per scan for its timers and
+//! counters. `cargo bench`; the README's "Performance" table reports one run.
+
 // criterion_group! generates an undocumented function.
 #![allow(missing_docs)]
-//! counters. `cargo bench`; the README's "Performance" table reports one run.
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
 use plc_timers::counter::reference::CounterRef;
-use plc_timers::counter::s5::{CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef};
+use plc_timers::counter::s5::{
+    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+};
 use plc_timers::counter::{CounterInput, CounterKind, CounterOps};
 use plc_timers::iec::reference::Reference;
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
@@ -30,86 +33,144 @@ impl Rng {
     }
 }
 
+/// Steps per iteration of the one-step benchmarks: the inputs are drawn beforehand, so the
+/// timed loop is only the block (and the per-step time is the iteration time / STEPS).
+const STEPS: usize = 1024;
+
+/// Random input bits with clustered edges: each bit keeps its value with probability 3/4.
+fn input_bits(seed: u64) -> Vec<u8> {
+    let mut rng = Rng(seed);
+    let mut bits = 0u8;
+    (0..STEPS)
+        .map(|_| {
+            let flip = (rng.next() & rng.next()) as u8; // each bit flips with p = 1/4
+            bits ^= flip;
+            bits
+        })
+        .collect()
+}
+
 fn one_step(c: &mut Criterion) {
-    let mut g = c.benchmark_group("one step");
-    let tv = S5Time::from_word(0x0500).expect("valid");
+    let mut g = c.benchmark_group("one step (per 1024 steps)");
+    g.throughput(Throughput::Elements(STEPS as u64));
+    let bits = input_bits(1);
+    let tv = S5Time::from_word(0x0005).expect("valid");
+    let s5_inputs: Vec<S5Input> = bits
+        .iter()
+        .map(|b| S5Input {
+            s: b & 1 != 0,
+            r: b & 0x70 == 0x70,
+            fr: false,
+            tv,
+        })
+        .collect();
     for kind in S5Kind::ALL {
         g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
             let mut t = S5TimerRef::new(kind);
             let mut now = 0u64;
             b.iter(|| {
-                now += 10;
-                let s = now % 700 < 400;
-                black_box(t.call(black_box(now), S5Input::new(s, false, tv)))
+                for &input in &s5_inputs {
+                    now += 7;
+                    black_box(t.call(now, input));
+                }
             })
         });
         g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
             let mut area = TimerMemory::<1>::new();
             let mut now = 0u64;
             b.iter(|| {
-                now += 10;
-                let s = now % 700 < 400;
-                black_box(area.call(0, kind, black_box(now), S5Input::new(s, false, tv)))
+                for &input in &s5_inputs {
+                    now += 7;
+                    let _ = black_box(area.call(0, kind, now, input));
+                }
             })
         });
     }
-    let pt = Time::from_millis(300);
+    let pt = Time::from_millis(30);
+    let iec_inputs: Vec<IecInput> = bits
+        .iter()
+        .map(|b| IecInput {
+            input: b & 1 != 0,
+            pt,
+            reset: b & 0x70 == 0x70,
+        })
+        .collect();
     for kind in IecKind::ALL {
         g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
             let mut t = Reference::<u32>::new();
             let mut now = 0u32;
             b.iter(|| {
-                now = now.wrapping_add(7);
-                black_box(t.call(kind, black_box(now), IecInput::new(now % 1000 < 600, pt)))
+                for &input in &iec_inputs {
+                    now = now.wrapping_add(7);
+                    black_box(t.call(kind, now, input));
+                }
             })
         });
         g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
             let mut t = IecTimer::new();
             let mut now = 0u32;
             b.iter(|| {
-                now = now.wrapping_add(7);
-                black_box(t.call(kind, black_box(now), IecInput::new(now % 1000 < 600, pt)))
+                for &input in &iec_inputs {
+                    now = now.wrapping_add(7);
+                    black_box(t.call(kind, now, input));
+                }
             })
         });
     }
+    let ctr_inputs: Vec<CounterInput<i16>> = bits
+        .iter()
+        .map(|b| CounterInput {
+            cu: b & 1 != 0,
+            cd: b & 2 != 0,
+            r: b & 0x70 == 0x70,
+            ld: b & 0x0C == 0x0C,
+            pv: 10,
+        })
+        .collect();
     for kind in CounterKind::ALL {
         g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
             let mut ctr = CounterRef::<i16>::new(kind);
-            let mut i = 0u32;
             b.iter(|| {
-                i += 1;
-                let input = CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, r: i % 97 == 0, ld: false, pv: 10 };
-                black_box(ctr.call(black_box(input)))
+                for &input in &ctr_inputs {
+                    black_box(ctr.call(input));
+                }
             })
         });
         g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
             let mut ctr = PackedCounter::<i16>::new();
-            let mut i = 0u32;
             b.iter(|| {
-                i += 1;
-                let input = CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, r: i % 97 == 0, ld: false, pv: 10 };
-                black_box(ctr.call(kind, black_box(input)))
+                for &input in &ctr_inputs {
+                    black_box(ctr.call(kind, input));
+                }
             })
         });
     }
     let pv = CounterPreset::new(5).expect("valid");
+    let s5c_inputs: Vec<S5CounterInput> = bits
+        .iter()
+        .map(|b| S5CounterInput {
+            cu: b & 1 != 0,
+            cd: b & 2 != 0,
+            s: b & 0x0C == 0x0C,
+            r: b & 0x70 == 0x70,
+            pv,
+        })
+        .collect();
     for kind in S5CounterKind::ALL {
         g.bench_function(BenchmarkId::new("reference", kind.name()), |b| {
             let mut ctr = S5CounterRef::new(kind);
-            let mut i = 0u32;
             b.iter(|| {
-                i += 1;
-                let input = S5CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, s: i % 50 == 0, r: false, pv };
-                black_box(ctr.call(black_box(input)))
+                for &input in &s5c_inputs {
+                    black_box(ctr.call(input));
+                }
             })
         });
         g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
             let mut area = CounterMemory::<1>::new();
-            let mut i = 0u32;
             b.iter(|| {
-                i += 1;
-                let input = S5CounterInput { cu: i & 1 != 0, cd: i & 2 != 0, s: i % 50 == 0, r: false, pv };
-                black_box(area.call(0, kind, black_box(input)))
+                for &input in &s5c_inputs {
+                    let _ = black_box(area.call(0, kind, input));
+                }
             })
         });
     }
@@ -184,28 +245,52 @@ fn area_ticks(c: &mut Criterion) {
 
 const TONS: usize = 10_000;
 
+/// Each TON's IN follows its own square wave (period 20..=200 scans, duty 25..75 %) and its PT
+/// is 100..=2 000 ms; a scan every 10 ms. So at any scan some timers are timing, some have
+/// expired, some are off, and some see an edge.
 fn ton_scan(c: &mut Criterion) {
     let mut rng = Rng(42);
-    let inputs: Vec<bool> = (0..TONS).map(|_| rng.next() % 4 != 0).collect();
-    let pts: Vec<Time> = (0..TONS).map(|_| Time::from_millis((rng.next() % 5_000) as i32)).collect();
+    let waves: Vec<(u32, u32, u32)> = (0..TONS)
+        .map(|_| {
+            let period = (rng.next() % 181 + 20) as u32;
+            let on = period * (rng.next() % 51 + 25) as u32 / 100;
+            (period, on, (rng.next() % u64::from(period)) as u32)
+        })
+        .collect();
+    let pts: Vec<Time> = (0..TONS)
+        .map(|_| Time::from_millis((rng.next() % 1_901 + 100) as i32))
+        .collect();
+    // The inputs of 200 successive scans, drawn beforehand so that only the timers are timed.
+    let scans: Vec<Vec<bool>> = (0..200u32)
+        .map(|scan| {
+            waves
+                .iter()
+                .map(|&(period, on, phase)| (scan + phase) % period < on)
+                .collect()
+        })
+        .collect();
     let mut g = c.benchmark_group("scan of 10 000 TON");
     g.throughput(Throughput::Elements(TONS as u64));
     g.bench_function("reference", |b| {
         let mut timers = vec![Reference::<u32>::new(); TONS];
-        let mut now = 0u32;
+        let mut scan = 0usize;
         b.iter(|| {
-            now = now.wrapping_add(10);
-            for ((t, &input), &pt) in timers.iter_mut().zip(&inputs).zip(&pts) {
+            scan += 1;
+            let now = (scan as u32).wrapping_mul(10);
+            let inputs = &scans[scan % scans.len()];
+            for ((t, &input), &pt) in timers.iter_mut().zip(inputs).zip(&pts) {
                 black_box(t.call(IecKind::Ton, now, IecInput::new(input, pt)));
             }
         })
     });
     g.bench_function("optimized", |b| {
         let mut timers = vec![IecTimer::new(); TONS];
-        let mut now = 0u32;
+        let mut scan = 0usize;
         b.iter(|| {
-            now = now.wrapping_add(10);
-            for ((t, &input), &pt) in timers.iter_mut().zip(&inputs).zip(&pts) {
+            scan += 1;
+            let now = (scan as u32).wrapping_mul(10);
+            let inputs = &scans[scan % scans.len()];
+            for ((t, &input), &pt) in timers.iter_mut().zip(inputs).zip(&pts) {
                 black_box(t.call(IecKind::Ton, now, IecInput::new(input, pt)));
             }
         })
@@ -241,7 +326,13 @@ fn counter_bank(c: &mut Criterion) {
             k += 1;
             for (i, ctr) in counters.iter_mut().enumerate() {
                 let bit = |w: &[u64; WORDS]| w[i / 64] >> (i % 64) & 1 != 0;
-                black_box(ctr.call(CounterInput { cu: bit(&s[0]), cd: bit(&s[1]), r: bit(&s[2]), ld: bit(&s[3]), pv: 100 }));
+                black_box(ctr.call(CounterInput {
+                    cu: bit(&s[0]),
+                    cd: bit(&s[1]),
+                    r: bit(&s[2]),
+                    ld: bit(&s[3]),
+                    pv: 100,
+                }));
             }
         })
     });
@@ -251,7 +342,15 @@ fn counter_bank(c: &mut Criterion) {
         b.iter(|| {
             let s = &scans[k % scans.len()];
             k += 1;
-            bank.scan(BankInputs { cu: &s[0], cd: &s[1], r: &s[2], ld: &s[3] }, 100);
+            bank.scan(
+                BankInputs {
+                    cu: &s[0],
+                    cd: &s[1],
+                    r: &s[2],
+                    ld: &s[3],
+                },
+                100,
+            );
             black_box(&bank);
         })
     });

@@ -374,6 +374,7 @@ fn arb_op_u32() -> impl Strategy<Value = Op<u32>> {
     ]
 }
 
+#[cfg(not(kani))]
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(20_000))]
 

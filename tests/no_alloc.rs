@@ -6,7 +6,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
 use plc_timers::counter::reference::CounterRef;
-use plc_timers::counter::s5::{CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef};
+use plc_timers::counter::s5::{
+    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+};
 use plc_timers::counter::{CounterInput, CounterKind, CounterOps};
 use plc_timers::iec::reference::Reference;
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
@@ -54,7 +56,12 @@ fn no_step_allocates() {
     let before = ALLOCATIONS.load(Ordering::SeqCst);
     for i in 0..1_000u64 {
         let s = i % 7 < 4;
-        let input = S5Input { s, r: i % 31 == 0, fr: i % 13 == 0, tv };
+        let input = S5Input {
+            s,
+            r: i % 31 == 0,
+            fr: i % 13 == 0,
+            tv,
+        };
         for (k, t) in s5_refs.iter_mut().enumerate() {
             t.call(i * 10, input);
             let _ = area.call(k, S5Kind::ALL[k], i * 10, input);
@@ -62,21 +69,59 @@ fn no_step_allocates() {
         area.tick(TimeBase::Ms10, 1);
         let _ = (area.load(0), area.load_bcd(1), area.status(2));
         for kind in IecKind::ALL {
-            let ii = IecInput { input: s, pt, reset: i % 17 == 0 };
+            let ii = IecInput {
+                input: s,
+                pt,
+                reset: i % 17 == 0,
+            };
             iec_ref.call(kind, i as u32 * 10, ii);
             iec.call(kind, i as u32 * 10, ii);
         }
         iec.read_q(i as u32);
         iec.reset_timer();
-        let ci = CounterInput { cu: s, cd: i % 3 == 0, r: i % 29 == 0, ld: i % 37 == 0, pv: 5 };
+        let ci = CounterInput {
+            cu: s,
+            cd: i % 3 == 0,
+            r: i % 29 == 0,
+            ld: i % 37 == 0,
+            pv: 5,
+        };
         ctr_ref.call(ci);
-        ctr.call(CounterKind::Ctud, CounterInput { cu: s, cd: i % 3 == 0, r: false, ld: false, pv: 5 });
+        ctr.call(
+            CounterKind::Ctud,
+            CounterInput {
+                cu: s,
+                cd: i % 3 == 0,
+                r: false,
+                ld: false,
+                pv: 5,
+            },
+        );
         let w = [i.wrapping_mul(0x9E37_79B9_7F4A_7C15); 2];
-        bank.scan(BankInputs { cu: &w, cd: &[!w[0]; 2], r: &[0; 2], ld: &[0; 2] }, 7);
-        let sci = S5CounterInput { cu: s, cd: i % 3 == 0, s: i % 50 == 0, r: i % 71 == 0, pv };
+        bank.scan(
+            BankInputs {
+                cu: &w,
+                cd: &[!w[0]; 2],
+                r: &[0; 2],
+                ld: &[0; 2],
+            },
+            7,
+        );
+        let sci = S5CounterInput {
+            cu: s,
+            cd: i % 3 == 0,
+            s: i % 50 == 0,
+            r: i % 71 == 0,
+            pv,
+        };
         s5c_ref.call(sci);
         let _ = s5c.call(1, S5CounterKind::SCud, sci);
     }
     let after = ALLOCATIONS.load(Ordering::SeqCst);
-    assert_eq!(after - before, 0, "steps allocated {} times", after - before);
+    assert_eq!(
+        after - before,
+        0,
+        "steps allocated {} times",
+        after - before
+    );
 }

@@ -41,6 +41,8 @@ pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
     fn saturating_inc(self) -> Self;
     /// `self - 1`, staying at `MIN`.
     fn saturating_dec(self) -> Self;
+    /// `self + up - down` saturating, for `up` and `down` not both true; branch-free.
+    fn saturating_step(self, up: bool, down: bool) -> Self;
     /// The value as an `i128` (every type fits).
     fn to_i128(self) -> i128;
     /// The value `v` if it is in the type's range.
@@ -61,6 +63,10 @@ macro_rules! counter_int {
             #[inline]
             fn saturating_dec(self) -> Self {
                 self.saturating_sub(1)
+            }
+            #[inline]
+            fn saturating_step(self, up: bool, down: bool) -> Self {
+                self.saturating_add(up as $t).saturating_sub(down as $t)
             }
             #[inline]
             fn to_i128(self) -> i128 {

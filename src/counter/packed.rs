@@ -54,11 +54,9 @@ impl<T: CounterInt> CounterOps<T> for PackedCounter<T> {
         let rising = now & !self.edges;
         self.edges = now;
         // Up only, down only, or neither (both rising cancel out).
-        let cv = match rising {
-            CU_PREV => self.cv.saturating_inc(),
-            CD_PREV => self.cv.saturating_dec(),
-            _ => self.cv,
-        };
+        let cv = self
+            .cv
+            .saturating_step(rising == CU_PREV, rising == CD_PREV);
         let cv = if i.ld { input.pv } else { cv };
         self.cv = if i.r { T::ZERO } else { cv };
         outputs(self.cv, input.pv)

@@ -319,9 +319,14 @@ impl S5CounterCell {
         S5CounterCell(now | cv)
     }
 
-    /// The outputs.
+    /// The outputs (BCD by table lookup).
     pub const fn output(self) -> S5CounterOutput {
-        self.abstraction().output()
+        let cv = self.0 & CV;
+        S5CounterOutput {
+            q: cv != 0,
+            cv,
+            cv_bcd: crate::s5::cell::BCD_TABLE[cv as usize],
+        }
     }
 }
 

@@ -153,6 +153,24 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline]
     fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C> {
         let k = code(kind);
+        // Fast path: a stopped timer of the same kind whose IN did not change has nothing to do
+        // when the call would leave every member as it is (checked by the equivalence proofs).
+        let in_bit = if input.input { flag::IN } else { 0 };
+        let same = flag::KIND_VALID | (k as u8) << flag::KIND_SHIFT | in_bit;
+        if self.flags & !flag::Q == same {
+            let zero = self.et == C::default();
+            let q = self.flags & flag::Q != 0;
+            let quiet = match kind {
+                IecKind::Tp => input.input || zero,
+                IecKind::Ton => input.input || (zero && !q),
+                IecKind::Tof => !input.input || (zero && q),
+                // TONR resumes on a level.
+                IecKind::Tonr => false,
+            };
+            if quiet {
+                return IecOutput { q, et: self.et };
+            }
+        }
         let was_in = self.flags & flag::IN != 0;
         let running = self.flags & flag::RUNNING != 0;
         match kind {
@@ -206,9 +224,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 }
             }
         }
-        let kind_bits = flag::KIND_VALID | (k as u8) << flag::KIND_SHIFT;
-        let in_bit = if input.input { flag::IN } else { 0 };
-        self.flags = (self.flags & (flag::Q | flag::RUNNING)) | kind_bits | in_bit;
+        self.flags = (self.flags & (flag::Q | flag::RUNNING)) | same;
         IecOutput {
             q: self.flags & flag::Q != 0,
             et: self.et,

@@ -6,7 +6,7 @@
 
 use core::fmt;
 
-use super::cell::{Cell, BASE};
+use super::cell::{Cell, BASE, RUNNING};
 use super::{S5Input, S5Kind, S5Output};
 use crate::time::{S5Time, TimeBase};
 
@@ -88,6 +88,13 @@ impl<const N: usize> TimerMemory<N> {
     /// `n` ticks of `base` for the whole area: every running timer of that base loses
     /// `min(n, value)` units (S5TMR-TICK-01). One branch-free pass over the words.
     pub fn tick(&mut self, base: TimeBase, n: u64) {
+        if n == 1 {
+            let bits = u16::from(base.bits());
+            for cell in self.cells.iter_mut() {
+                *cell = cell.tick_once(bits);
+            }
+            return;
+        }
         let b = (base.bits() as u16) << 12;
         for cell in self.cells.iter_mut() {
             // Cells of another base are ticked with 0, which leaves them unchanged; selecting
@@ -103,10 +110,18 @@ impl<const N: usize> TimerMemory<N> {
         if t_ms <= self.now {
             return;
         }
+        // Only the bases of running timers need their ticks counted (each count is two
+        // divisions); one pass collects them.
+        let mut present = 0u8;
+        for cell in self.cells.iter() {
+            present |= u8::from(cell.0 & RUNNING != 0) << (cell.0 >> 12 & 3);
+        }
         for base in TimeBase::ALL {
-            let n = super::ticks_between(self.now, t_ms, base);
-            if n > 0 {
-                self.tick(base, n);
+            if present & 1 << base.bits() != 0 {
+                let n = super::ticks_between(self.now, t_ms, base);
+                if n > 0 {
+                    self.tick(base, n);
+                }
             }
         }
         self.now = t_ms;
