@@ -84,7 +84,10 @@ fn step_strategy() -> impl Strategy<Value = Step> {
 
 /// A trace starting at an arbitrary clock phase (so ticks do not line up with t = 0).
 fn trace_strategy() -> impl Strategy<Value = (u64, Vec<Step>)> {
-    (0u64..1_000_000_000, prop::collection::vec(step_strategy(), 1..60))
+    (
+        0u64..1_000_000_000,
+        prop::collection::vec(step_strategy(), 1..60),
+    )
 }
 
 /// Runs the trace through the three implementations and compares outputs and states after each
@@ -216,5 +219,8 @@ fn fixed_trace_ticks_follow_clock_phase() {
     let input = S5Input::new(true, false, tv);
     assert!(!sd.call(7, input).q);
     assert!(!sd.call(29, input).q, "ticks at 10 and 20: one unit left");
-    assert!(sd.call(30, input).q, "third tick at 30 ms runs the time out");
+    assert!(
+        sd.call(30, input).q,
+        "third tick at 30 ms runs the time out"
+    );
 }
