@@ -152,6 +152,14 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
                 n,
                 kind
             );
+            // S5TMR-LOAD-01: the STL reads of the area (L T, LC T, A T) show the box outputs.
+            prop_assert_eq!(
+                (area.load(i), area.load_bcd(i), area.status(i)),
+                (Ok(out_ref.bi), Ok(out_ref.bcd), Ok(out_ref.q)),
+                "S5TMR-LOAD-01 L/LC/A T {}, step {}",
+                i,
+                n
+            );
             // S5TMR-RANGE-01 along the trace: the value fits, the BCD word is valid BCD with
             // the base in bits 13-12 and nothing above.
             let st = refs[i].state;
@@ -172,6 +180,8 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
             }
         }
     }
+    // A timer number outside the area is a typed error, not a panic.
+    prop_assert!(area.load(5).is_err() && area.status(usize::MAX).is_err());
     Ok(())
 }
 
