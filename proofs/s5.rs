@@ -313,11 +313,59 @@ fn exhaustive_expiry_on_vth_tick() {
     }
 }
 
-/// S5-EQUIV-02: from the initial state, every input sequence of length 5 over 24 symbols (six
-/// S/R/FR patterns x a time step of 0 ms, one 10 ms tick, 25 ms or 1 s: 7.96 million sequences
-/// per kind) gives the same outputs and states through the reference's `call` (ticks counted
-/// from the clock) and a one-timer `TimerMemory` (ticks applied per base by the area). TV = 30 ms
-/// (3 units): the sequences reach start, run, expiry, restart and reset.
+/// S5-EQUIV-02: from the initial state, the input sequence `steps` (time step in ms, input)
+/// gives the same outputs and states through the reference's `call` (ticks counted from the
+/// clock per timer) and a one-timer `TimerMemory` (ticks applied per base by the area).
+pub fn prop_sequence_equivalence(kind: S5Kind, steps: &[(u64, S5Input)]) {
+    let mut r = S5TimerRef::new(kind);
+    let mut area = TimerMemory::<1>::new();
+    let mut t = 0u64;
+    for &(dt, input) in steps {
+        t = t.saturating_add(dt);
+        let a = r.call(t, input);
+        let b = area.call(0, kind, t, input).expect("timer 0 exists");
+        assert_eq!(a, b, "S5-EQUIV-02 {kind:?} at t = {t}");
+        assert_eq!(
+            cell::abstraction(area.cells()[0]),
+            r.state,
+            "S5-EQUIV-02 state"
+        );
+    }
+}
+
+/// S5-AREA-01: `n` ticks of `tick_base` on an area of four timers in the states `states` equal
+/// the reference tick of each timer whose base is `tick_base`, and leave the others unchanged.
+pub fn prop_area_tick(states: [S5State; 4], tick_base: TimeBase, n: u64) {
+    let mut cells = [Cell::RESET; 4];
+    for (c, &s) in cells.iter_mut().zip(states.iter()) {
+        match Cell::from_state(s) {
+            Some(valid) => *c = valid,
+            None => return,
+        }
+    }
+    let mut area = TimerMemory::<4>::from_cells(cells, 0);
+    area.tick(tick_base, n);
+    for (i, &state) in states.iter().enumerate() {
+        let mut r = S5TimerRef {
+            kind: S5Kind::SOdt,
+            state,
+            t_prev: 0,
+        };
+        if state.base == tick_base {
+            r.tick(n);
+        }
+        assert_eq!(
+            cell::abstraction(area.cells()[i]),
+            r.state,
+            "S5-AREA-01 timer {i}"
+        );
+    }
+}
+
+/// S5-EQUIV-02 driver: every input sequence of length 5 over 24 symbols (six S/R/FR patterns x
+/// a time step of 0 ms, one 10 ms tick, 25 ms or 1 s: 7.96 million sequences per kind) from the
+/// initial state. TV = 30 ms (3 units): the sequences reach start, run, expiry, restart and
+/// reset.
 #[test]
 fn bounded_sequences_reference_vs_memory_area() {
     // Symbols: (S, R, FR) x time step; 6 input patterns x 4 steps = 24 symbols, length 5.
@@ -333,74 +381,48 @@ fn bounded_sequences_reference_vs_memory_area() {
     let tv = S5Time::from_word(0x0003).expect("valid word");
     let symbols = PATTERNS.len() * STEPS.len();
     let sequences = symbols.pow(5);
-    for kind in S5Kind::ALL {
-        for mut code in 0..sequences {
-            let mut r = S5TimerRef::new(kind);
-            let mut area = TimerMemory::<1>::new();
-            let mut t = 0u64;
-            for _ in 0..5 {
-                let sym = code % symbols;
-                code /= symbols;
-                let (s, rr, fr) = PATTERNS[sym % PATTERNS.len()];
-                t += STEPS[sym / PATTERNS.len()];
-                let input = S5Input { s, r: rr, fr, tv };
-                let a = r.call(t, input);
-                let b = area.call(0, kind, t, input).expect("timer 0 exists");
-                assert_eq!(a, b, "S5-EQUIV-02 {kind:?} at t = {t}");
-                assert_eq!(
-                    cell::abstraction(area.cells()[0]),
-                    r.state,
-                    "S5-EQUIV-02 state"
-                );
-            }
+    thread::scope(|scope| {
+        for kinds in [&S5Kind::ALL[..3], &S5Kind::ALL[3..]] {
+            scope.spawn(move || {
+                for &kind in kinds {
+                    for mut code in 0..sequences {
+                        let mut steps = [(0u64, S5Input::new(false, false, tv)); 5];
+                        for step in steps.iter_mut() {
+                            let sym = code % symbols;
+                            code /= symbols;
+                            let (s, r, fr) = PATTERNS[sym % PATTERNS.len()];
+                            *step = (STEPS[sym / PATTERNS.len()], S5Input { s, r, fr, tv });
+                        }
+                        prop_sequence_equivalence(kind, &steps);
+                    }
+                }
+            });
         }
-    }
+    });
 }
 
-/// S5-AREA-01: one tick of an area of 4 timers (one per base, all states of interest) equals
-/// the reference tick of each timer whose base matches, and leaves the others unchanged.
+/// S5-AREA-01 driver: for every value 0..=999 and every (running, Q) pair, an area of four
+/// timers holding that value in each of the four bases, ticked by each base with 1, 2 or 999
+/// ticks (every branch of the tick rule: below, and at or past the value).
 #[test]
 fn exhaustive_area_tick_per_base() {
     for value in 0..=999u16 {
         for flags in 0..4u8 {
+            let states = TimeBase::ALL.map(|base| S5State {
+                running: flags & 1 != 0,
+                value,
+                base,
+                q: flags & 2 != 0,
+                s_prev: false,
+                fr_prev: false,
+            });
             for tick_base in TimeBase::ALL {
-                for n in [1u64, 2, 999] {
-                    let mut area = TimerMemory::<4>::new();
-                    let mut refs = Vec::new();
-                    for (i, base) in TimeBase::ALL.into_iter().enumerate() {
-                        let state = S5State {
-                            running: flags & 1 != 0,
-                            value,
-                            base,
-                            q: flags & 2 != 0,
-                            s_prev: false,
-                            fr_prev: false,
-                        };
-                        let cell = Cell::from_state(state).expect("valid");
-                        area = with_cell(area, i, cell);
-                        refs.push(S5TimerRef {
-                            kind: S5Kind::SOdt,
-                            state,
-                            t_prev: 0,
-                        });
-                    }
-                    area.tick(tick_base, n);
-                    for (i, r) in refs.iter_mut().enumerate() {
-                        if r.state.base == tick_base {
-                            r.tick(n);
-                        }
-                        assert_eq!(cell::abstraction(area.cells()[i]), r.state, "S5-AREA-01");
-                    }
+                for n in [0u64, 1, 2, 999, u64::MAX] {
+                    prop_area_tick(states, tick_base, n);
                 }
             }
         }
     }
-}
-
-fn with_cell<const N: usize>(area: TimerMemory<N>, index: usize, cell: Cell) -> TimerMemory<N> {
-    let mut cells = *area.cells();
-    cells[index] = cell;
-    TimerMemory::from_cells(cells, area.now())
 }
 
 #[cfg(kani)]
@@ -457,5 +479,29 @@ mod kani_harnesses {
     #[kani::proof]
     fn kani_expiry_on_vth_tick() {
         prop_expiry_on_vth_tick(kani::any(), kani::any(), TimeBase::from_bits(kani::any()));
+    }
+
+    /// S5-AREA-01: a tick of a four-timer area over symbolic cells, base and tick count.
+    #[kani::proof]
+    fn kani_area_tick() {
+        let states = [any_state(), any_state(), any_state(), any_state()];
+        prop_area_tick(states, TimeBase::from_bits(kani::any()), kani::any());
+    }
+
+    /// S5-EQUIV-02: from the initial state, every symbolic sequence of three executions
+    /// (symbolic inputs and TVs, time steps from the tick-boundary set 0, 1, 9, 10, 11 ms, 1 s,
+    /// 10 s) through the reference and the area. The clock stays below 31 s, but `call` still
+    /// divides the clock by the (symbolic) base: the one harness here with a symbolic division.
+    #[kani::proof]
+    #[kani::unwind(4)]
+    fn kani_sequence_equivalence() {
+        const DT: [u64; 7] = [0, 1, 9, 10, 11, 1_000, 10_000];
+        let mut steps = [(0u64, S5Input::new(false, false, S5Time::ZERO)); 3];
+        for step in steps.iter_mut() {
+            let i: usize = kani::any();
+            kani::assume(i < DT.len());
+            *step = (DT[i], any_input());
+        }
+        prop_sequence_equivalence(kani::any(), &steps);
     }
 }
