@@ -13,9 +13,10 @@ use plc_timers::counter::s5::{
     CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
 };
 use plc_timers::counter::{CounterInput, CounterKind, CounterOps};
+use plc_timers::iec::bank::TonBank;
 use plc_timers::iec::reference::Reference;
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
-use plc_timers::s5::cell::Cell;
+use plc_timers::s5::cell::{Cell, PackedTimer};
 use plc_timers::s5::memory::TimerMemory;
 use plc_timers::s5::reference::S5TimerRef;
 use plc_timers::s5::{S5Input, S5Kind};
@@ -76,12 +77,12 @@ fn one_step(c: &mut Criterion) {
             })
         });
         g.bench_function(BenchmarkId::new("optimized", kind.name()), |b| {
-            let mut area = TimerMemory::<1>::new();
+            let mut t = PackedTimer::new();
             let mut now = 0u64;
             b.iter(|| {
                 for &input in &s5_inputs {
                     now += 7;
-                    let _ = black_box(area.call(0, kind, now, input));
+                    black_box(t.call(kind, now, input));
                 }
             })
         });
@@ -243,7 +244,9 @@ fn area_ticks(c: &mut Criterion) {
     area_tick::<65_536>(c, "65 536");
 }
 
-const TONS: usize = 10_000;
+/// 157 words of 64: the bank's size, and the same number of single structures.
+const TON_WORDS: usize = 157;
+const TONS: usize = 64 * TON_WORDS;
 
 /// Each TON's IN follows its own square wave (period 20..=200 scans, duty 25..75 %) and its PT
 /// is 100..=2 000 ms; a scan every 10 ms. So at any scan some timers are timing, some have
@@ -269,7 +272,7 @@ fn ton_scan(c: &mut Criterion) {
                 .collect()
         })
         .collect();
-    let mut g = c.benchmark_group("scan of 10 000 TON");
+    let mut g = c.benchmark_group("scan of 10 048 TON");
     g.throughput(Throughput::Elements(TONS as u64));
     g.bench_function("reference", |b| {
         let mut timers = vec![Reference::<u32>::new(); TONS];
@@ -293,6 +296,30 @@ fn ton_scan(c: &mut Criterion) {
             for ((t, &input), &pt) in timers.iter_mut().zip(inputs).zip(&pts) {
                 black_box(t.call(IecKind::Ton, now, IecInput::new(input, pt)));
             }
+        })
+    });
+    let bits: Vec<[u64; TON_WORDS]> = scans
+        .iter()
+        .map(|inputs| {
+            let mut w = [0u64; TON_WORDS];
+            for (i, &b) in inputs.iter().enumerate() {
+                w[i / 64] |= u64::from(b) << (i % 64);
+            }
+            w
+        })
+        .collect();
+    let mut pt_words = Box::new([[Time::ZERO; 64]; TON_WORDS]);
+    for (i, &pt) in pts.iter().enumerate() {
+        pt_words[i / 64][i % 64] = pt;
+    }
+    g.bench_function("optimized bank (TonBank)", |b| {
+        let mut bank = Box::new(TonBank::<TON_WORDS>::new());
+        let mut scan = 0usize;
+        b.iter(|| {
+            scan += 1;
+            let now = (scan as u32).wrapping_mul(10);
+            bank.scan(now, &bits[scan % bits.len()], &pt_words);
+            black_box(&bank);
         })
     });
     g.finish();

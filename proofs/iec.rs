@@ -10,6 +10,7 @@
 
 use std::thread;
 
+use plc_timers::iec::bank::TonBank;
 use plc_timers::iec::reference::Reference;
 use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps};
 use plc_timers::time::clock::ClockWord;
@@ -387,6 +388,61 @@ proptest! {
         if let Op::Call(kind, now, input) = op {
             prop_table_8_20(state, kind, now, input, Time::from_millis(7));
         }
+    }
+}
+
+/// IEC-BANK-01: a TON bank scanned with the IN bits `inputs` and presets `pt` at the times
+/// `start + steps[..k]` equals one reference TON per bit, called once per scan.
+pub fn prop_ton_bank(start: u32, steps: &[u32], inputs: &[[u64; 2]], pts: &[i32; 128]) {
+    let mut pt = [[Time::ZERO; 64]; 2];
+    for (i, &p) in pts.iter().enumerate() {
+        pt[i / 64][i % 64] = Time::from_millis(p);
+    }
+    let mut bank = TonBank::<2>::new();
+    let mut refs = vec![Reference::<u32>::new(); 128];
+    let mut now = start;
+    for (dt, input) in steps.iter().zip(inputs) {
+        now = now.wrapping_add(*dt);
+        bank.scan(now, input, &pt);
+        for (i, r) in refs.iter_mut().enumerate() {
+            let bit = input[i / 64] >> (i % 64) & 1 != 0;
+            let o = r.call(IecKind::Ton, now, IecInput::new(bit, pt[i / 64][i % 64]));
+            assert_eq!(
+                bank.output(i),
+                Some((o.q, o.et)),
+                "IEC-BANK-01: timer {i} at {now}"
+            );
+        }
+    }
+}
+
+#[cfg(not(kani))]
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2_000))]
+
+    /// IEC-BANK-01 on random IN patterns with clustered edges (a quarter of the bits flip per
+    /// scan), presets including negative and 0, and scan intervals crossing the 2^32 ms wrap.
+    #[test]
+    fn proptest_ton_bank_equals_reference(
+        start in prop_oneof![any::<u32>(), (u32::MAX - 500)..=u32::MAX],
+        steps in prop::collection::vec(prop_oneof![0u32..5, 0u32..200, any::<u32>()], 16),
+        flips in prop::collection::vec(any::<[u64; 2]>(), 16),
+        pts in prop::array::uniform32(prop_oneof![-5i32..5, 0i32..300, any::<i32>()]),
+        pts2 in prop::array::uniform32(0i32..300),
+    ) {
+        let mut all = [0i32; 128];
+        for i in 0..128 {
+            all[i] = if i % 2 == 0 { pts[i / 4] } else { pts2[i / 4] };
+        }
+        let mut input = [0u64; 2];
+        let inputs: Vec<[u64; 2]> = flips
+            .iter()
+            .map(|f| {
+                input = [input[0] ^ (f[0] & f[0].rotate_left(17)), input[1] ^ (f[1] & f[1].rotate_left(17))];
+                input
+            })
+            .collect();
+        prop_ton_bank(start, &steps, &inputs, &all);
     }
 }
 

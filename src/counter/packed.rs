@@ -53,12 +53,18 @@ impl<T: CounterInt> CounterOps<T> for PackedCounter<T> {
         let now = (u8::from(i.cu) * CU_PREV) | (u8::from(i.cd) * CD_PREV);
         let rising = now & !self.edges;
         self.edges = now;
-        // Up only, down only, or neither (both rising cancel out).
-        let cv = self
-            .cv
-            .saturating_step(rising == CU_PREV, rising == CD_PREV);
-        let cv = if i.ld { input.pv } else { cv };
-        self.cv = if i.r { T::ZERO } else { cv };
+        self.cv = if i.r {
+            T::ZERO
+        } else if i.ld {
+            input.pv
+        } else {
+            // Up only, down only, or neither (both rising cancel out).
+            match rising {
+                CU_PREV => self.cv.saturating_inc(),
+                CD_PREV => self.cv.saturating_dec(),
+                _ => self.cv,
+            }
+        };
         outputs(self.cv, input.pv)
     }
 

@@ -24,6 +24,7 @@
 //! assert_eq!((out.q, out.et), (true, 500));
 //! ```
 
+pub mod bank;
 pub mod reference;
 pub mod structure;
 

@@ -192,6 +192,39 @@ impl Cell {
     }
 }
 
+/// One optimized timer on its own (outside a timer memory area): the packed cell and the CPU time
+/// of its previous execution, from which the ticks of its base are counted, as the reference does.
+/// The ticks are only counted while the timer runs (a stopped timer ignores them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PackedTimer {
+    /// The timer word.
+    pub cell: Cell,
+    /// The CPU time (ms) of the previous execution.
+    pub t_prev: u64,
+}
+
+impl PackedTimer {
+    /// A cleared timer at CPU time 0.
+    pub const fn new() -> PackedTimer {
+        PackedTimer {
+            cell: Cell::RESET,
+            t_prev: 0,
+        }
+    }
+
+    /// One execution of the box `kind` at CPU time `t_ms` (not before the previous one).
+    #[inline]
+    pub fn call(&mut self, kind: S5Kind, t_ms: u64, input: S5Input) -> S5Output {
+        if self.cell.0 & RUNNING != 0 {
+            let n = super::ticks_between(self.t_prev, t_ms, self.cell.base());
+            self.cell = self.cell.tick(n);
+        }
+        self.t_prev = t_ms;
+        self.cell = self.cell.execute(kind, input);
+        self.cell.output()
+    }
+}
+
 /// The abstraction function: the reference state a cell represents.
 pub const fn abstraction(cell: Cell) -> S5State {
     let w = cell.0;
