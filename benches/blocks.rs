@@ -333,11 +333,15 @@ fn counter_bank(c: &mut Criterion) {
     let scans: Vec<[[u64; WORDS]; 4]> = (0..64)
         .map(|_| {
             let mut s = [[0u64; WORDS]; 4];
-            for w in 0..WORDS {
-                s[0][w] = rng.next();
-                s[1][w] = rng.next();
-                s[2][w] = rng.next() & rng.next() & rng.next() & rng.next();
-                s[3][w] = rng.next() & rng.next() & rng.next() & rng.next();
+            for (k, words) in s.iter_mut().enumerate() {
+                for word in words.iter_mut() {
+                    // CU and CD: every bit random; R and LD: each bit set with p = 1/16.
+                    *word = if k < 2 {
+                        rng.next()
+                    } else {
+                        rng.next() & rng.next() & rng.next() & rng.next()
+                    };
+                }
             }
             s
         })
