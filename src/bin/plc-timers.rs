@@ -25,6 +25,15 @@ enum Command {
     /// Compare a trace that carries outputs (another implementation's) with the reference;
     /// exit status 1 at the first difference.
     Check(BlockArgs),
+    /// Draw a trace as a timing diagram (SVG): inputs and Q as waveforms, ET/BI/CV as a ramp
+    /// with the preset marked.
+    Diagram {
+        #[command(flatten)]
+        block: BlockArgs,
+        /// Where to write the SVG.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
     /// Convert an S5TIME literal or word: prints `W#16#XXXX <ms> <S5T# literal>`.
     #[command(name = "s5time")]
     S5time {
@@ -134,6 +143,21 @@ fn main() -> ExitCode {
             }
             Err(e) => fail(e),
         },
+        Command::Diagram {
+            block: args,
+            output,
+        } => {
+            let result = args.block().and_then(|mut block| {
+                trace::record(block.as_mut(), args.input()?, &args.presets())
+            });
+            match result {
+                Ok(rec) => match std::fs::write(&output, trace::diagram::svg(&rec)) {
+                    Ok(()) => ExitCode::SUCCESS,
+                    Err(e) => fail(format!("cannot write {}: {e}", output.display())),
+                },
+                Err(e) => fail(e),
+            }
+        }
         Command::Run(args) => {
             let result = args.block().and_then(|mut block| {
                 let stdout = io::stdout().lock();

@@ -5,9 +5,11 @@
 //! - [`runner`]: [`run`] (reference outputs for a trace) and [`check`] (compare another
 //!   implementation's outputs with the reference).
 //! - [`error`]: errors that name the line and column.
+//! - [`diagram`]: timing diagrams (SVG) of a recorded trace.
 
 pub mod block;
 mod blocks;
+pub mod diagram;
 pub mod error;
 pub mod registry;
 pub mod runner;
@@ -15,4 +17,4 @@ pub mod runner;
 pub use block::{CellError, Implementation, Input, InputKind, Row, TraceBlock, Value};
 pub use error::{Location, TraceError};
 pub use registry::{lookup, BlockOptions, BLOCK_NAMES};
-pub use runner::{check, run, CheckReport, Difference, PresetOption};
+pub use runner::{check, record, run, CheckReport, Difference, PresetOption, Recording};

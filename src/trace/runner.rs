@@ -428,3 +428,82 @@ pub fn check<R: io::Read>(
     )?;
     Ok(report)
 }
+
+/// A trace with the block's outputs, as [`record`] returns it: what a diagram draws.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Recording {
+    /// The block's canonical name.
+    pub block: &'static str,
+    /// `t_ms` of each row (the row index when the trace has no `t_ms`).
+    pub time: Vec<u64>,
+    /// Whether the trace had a `t_ms` column.
+    pub timed: bool,
+    /// Each boolean input column the trace has: its name and its value on each row.
+    pub inputs: Vec<(&'static str, Vec<bool>)>,
+    /// The preset text of the first row (column or option), if any: what the diagram marks.
+    pub preset: Option<(&'static str, String)>,
+    /// Each output: its name and its value on each row.
+    pub outputs: Vec<(&'static str, Vec<Value>)>,
+}
+
+/// Runs the trace through `block` like [`run`], keeping the rows instead of writing them.
+pub fn record<R: io::Read>(
+    block: &mut dyn TraceBlock,
+    input: R,
+    presets: &[PresetOption<'_>],
+) -> Result<Recording, TraceError> {
+    let inputs = block.inputs();
+    let name = block.name();
+    let output_names = block.outputs();
+    let mut rec = Recording {
+        block: name,
+        time: Vec::new(),
+        timed: false,
+        inputs: Vec::new(),
+        preset: None,
+        outputs: output_names.iter().map(|&n| (n, Vec::new())).collect(),
+    };
+    let mut row = 0u64;
+    drive(
+        block,
+        input,
+        presets,
+        false,
+        |layout, _line, record, values| {
+            if row == 0 {
+                rec.timed = layout.time_column.is_some();
+                for (i, input) in inputs.iter().enumerate() {
+                    match (input.kind, layout.input_column[i]) {
+                        (InputKind::Bool, Some(_)) => rec.inputs.push((input.name, Vec::new())),
+                        (InputKind::Preset { .. }, column) => {
+                            let text = column
+                                .and_then(|c| record.get(c).map(str::to_string))
+                                .or_else(|| layout.option_value[i].clone());
+                            rec.preset = text.map(|t| (input.name, t.trim().to_string()));
+                        }
+                        _ => {}
+                    }
+                }
+            }
+            let t = layout
+                .time_column
+                .and_then(|c| record.get(c))
+                .and_then(|t| t.trim().parse().ok())
+                .unwrap_or(row);
+            rec.time.push(t);
+            for (name, values) in rec.inputs.iter_mut() {
+                let i = inputs.iter().position(|c| c.name == *name);
+                let text = i
+                    .and_then(|i| layout.input_column[i])
+                    .and_then(|c| record.get(c));
+                values.push(text.and_then(parse_bool).unwrap_or(false));
+            }
+            for ((_, values), v) in rec.outputs.iter_mut().zip(values) {
+                values.push(*v);
+            }
+            row += 1;
+            Ok(true)
+        },
+    )?;
+    Ok(rec)
+}
