@@ -64,14 +64,17 @@ pub fn svg(rec: &Recording) -> String {
         .inputs
         .iter()
         .map(|(n, v)| (*n, v.clone()))
-        .chain(rec.outputs.iter().filter_map(|(n, v)| {
-            matches!(v.first(), Some(Value::Bool(_))).then(|| {
-                (
-                    *n,
-                    v.iter().map(|x| matches!(x, Value::Bool(true))).collect(),
-                )
-            })
-        }))
+        .chain(
+            rec.outputs
+                .iter()
+                .filter(|&(_n, v)| matches!(v.first(), Some(Value::Bool(_))))
+                .map(|(n, v)| {
+                    (
+                        *n,
+                        v.iter().map(|x| matches!(x, Value::Bool(true))).collect(),
+                    )
+                }),
+        )
         .collect();
     let height = TOP + bools.len() as f64 * BOOL_LANE + ramps.len() as f64 * VALUE_LANE + AXIS;
     let t0 = rec.time.first().copied().unwrap_or(0) as f64;
