@@ -236,3 +236,47 @@ fn examples_reference_equals_optimized() {
         assert!(stdout(&reference).lines().count() > 5, "{name} has rows");
     }
 }
+
+/// CLI-VEC-01 / CLI-DIAG-01: `vectors` writes the directories and a README; a written vector
+/// checks clean through `check`; `diagram` writes an SVG.
+#[test]
+fn vectors_and_diagram_commands() {
+    let dir = std::env::temp_dir().join(format!("plc-timers-vectors-{}", std::process::id()));
+    let dir_s = dir.to_string_lossy().into_owned();
+    let o = plc(&["vectors", &dir_s], "");
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(dir.join("README.txt").is_file());
+    let file = dir.join("S_ODTS").join("random-07.csv");
+    let o = plc(&["check", "S_ODTS", &file.to_string_lossy()], "");
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    let o = plc(
+        &[
+            "check",
+            "CTUD",
+            "--type",
+            "ULINT",
+            &dir.join("CTUD-ULINT")
+                .join("random-00.csv")
+                .to_string_lossy(),
+        ],
+        "",
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    let svg = dir.join("ton.svg");
+    let o = plc(
+        &[
+            "diagram",
+            "TON",
+            "--pt",
+            "T#500ms",
+            "examples/traces/ton.csv",
+            "-o",
+            &svg.to_string_lossy(),
+        ],
+        "",
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).expect("svg written");
+    assert!(text.starts_with("<svg") && text.contains("data-name=\"Q\""));
+    let _ = std::fs::remove_dir_all(&dir);
+}

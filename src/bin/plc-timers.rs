@@ -34,6 +34,11 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
     },
+    /// Write test vectors: for every block, a directory of CSV traces with reference outputs.
+    Vectors {
+        /// The directory to create (or fill).
+        dir: PathBuf,
+    },
     /// Convert an S5TIME literal or word: prints `W#16#XXXX <ms> <S5T# literal>`.
     #[command(name = "s5time")]
     S5time {
@@ -107,6 +112,22 @@ impl BlockArgs {
     }
 }
 
+/// Writes every vector and a README under `dir`; returns the number of files.
+fn write_vectors(dir: &std::path::Path) -> Result<usize, String> {
+    let vectors = trace::vectors::all()?;
+    let io = |p: &std::path::Path, e: std::io::Error| format!("cannot write {}: {e}", p.display());
+    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
+    let readme = dir.join("README.txt");
+    std::fs::write(&readme, trace::vectors::README).map_err(|e| io(&readme, e))?;
+    for v in &vectors {
+        let sub = dir.join(&v.dir);
+        std::fs::create_dir_all(&sub).map_err(|e| io(&sub, e))?;
+        let path = sub.join(&v.file);
+        std::fs::write(&path, &v.csv).map_err(|e| io(&path, e))?;
+    }
+    Ok(vectors.len())
+}
+
 /// Exit status for bad input, per the contract.
 const BAD_INPUT: u8 = 2;
 
@@ -158,6 +179,13 @@ fn main() -> ExitCode {
                 Err(e) => fail(e),
             }
         }
+        Command::Vectors { dir } => match write_vectors(&dir) {
+            Ok(n) => {
+                println!("wrote {n} vector files under {}", dir.display());
+                ExitCode::SUCCESS
+            }
+            Err(e) => fail(e),
+        },
         Command::Run(args) => {
             let result = args.block().and_then(|mut block| {
                 let stdout = io::stdout().lock();

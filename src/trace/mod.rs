@@ -6,6 +6,7 @@
 //!   implementation's outputs with the reference).
 //! - [`error`]: errors that name the line and column.
 //! - [`diagram`]: timing diagrams (SVG) of a recorded trace.
+//! - [`vectors`]: test vectors with reference outputs for other implementations.
 
 pub mod block;
 mod blocks;
@@ -13,6 +14,7 @@ pub mod diagram;
 pub mod error;
 pub mod registry;
 pub mod runner;
+pub mod vectors;
 
 pub use block::{CellError, Implementation, Input, InputKind, Row, TraceBlock, Value};
 pub use error::{Location, TraceError};
