@@ -14,6 +14,8 @@ use crate::counter::{CounterInput, CounterInt, CounterKind, CounterOps};
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
+use super::PresetCache;
+
 const PV: Input = Input::preset("PV", "pv");
 const CTU_INPUTS: &[Input] = &[Input::bool("CU"), Input::bool("R"), PV];
 const CTD_INPUTS: &[Input] = &[Input::bool("CD"), Input::bool("LD"), PV];
@@ -78,12 +80,12 @@ fn iec<T: CounterInt>(kind: CounterKind, implementation: Implementation) -> Box<
         Implementation::Reference => Box::new(IecCounterBlock {
             kind,
             counter: CounterRef::<T>::new(kind),
-            pv: None,
+            pv: PresetCache::new(),
         }),
         Implementation::Optimized => Box::new(IecCounterBlock {
             kind,
             counter: PackedCounter::<T>::new(),
-            pv: None,
+            pv: PresetCache::new(),
         }),
     }
 }
@@ -106,7 +108,7 @@ pub(crate) fn parse_pv<T: CounterInt>(text: &str) -> Result<T, CellError> {
 struct IecCounterBlock<T, C> {
     kind: CounterKind,
     counter: C,
-    pv: Option<(String, T)>,
+    pv: PresetCache<T>,
 }
 
 impl<T: CounterInt, C: CounterOps<T>> TraceBlock for IecCounterBlock<T, C> {
@@ -135,14 +137,7 @@ impl<T: CounterInt, C: CounterOps<T>> TraceBlock for IecCounterBlock<T, C> {
 
     fn step(&mut self, row: &Row<'_>, out: &mut Vec<Value>) -> Result<(), CellError> {
         let text = row.preset("PV").unwrap_or("");
-        let pv = match &self.pv {
-            Some((cached, pv)) if cached == text => *pv,
-            _ => {
-                let pv = parse_pv::<T>(text)?;
-                self.pv = Some((String::from(text), pv));
-                pv
-            }
-        };
+        let pv = self.pv.get(text, parse_pv::<T>)?;
         let input = CounterInput {
             cu: row.bool("CU"),
             cd: row.bool("CD"),

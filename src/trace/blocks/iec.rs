@@ -12,6 +12,8 @@ use crate::time::Time;
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
+use super::PresetCache;
+
 const INPUTS: &[Input] = &[Input::bool("IN"), Input::preset("PT", "pt")];
 const INPUTS_TONR: &[Input] = &[
     Input::bool("IN"),
@@ -43,8 +45,7 @@ pub(crate) fn parse_pt(text: &str) -> Result<Time, CellError> {
 struct IecBlock<T> {
     kind: IecKind,
     timer: T,
-    /// The last PT text and its value: most traces repeat one preset on every row.
-    pt_cache: Option<(String, Time)>,
+    pt: PresetCache<Time>,
 }
 
 impl<T: IecTimerOps<u32> + Default> IecBlock<T> {
@@ -52,19 +53,8 @@ impl<T: IecTimerOps<u32> + Default> IecBlock<T> {
         IecBlock {
             kind,
             timer: T::default(),
-            pt_cache: None,
+            pt: PresetCache::new(),
         }
-    }
-
-    fn pt(&mut self, text: &str) -> Result<Time, CellError> {
-        if let Some((cached, value)) = &self.pt_cache {
-            if cached == text {
-                return Ok(*value);
-            }
-        }
-        let value = parse_pt(text)?;
-        self.pt_cache = Some((String::from(text), value));
-        Ok(value)
     }
 }
 
@@ -91,7 +81,7 @@ impl<T: IecTimerOps<u32> + Default> TraceBlock for IecBlock<T> {
 
     fn step(&mut self, row: &Row<'_>, out: &mut Vec<Value>) -> Result<(), CellError> {
         let text = row.preset("PT").unwrap_or("");
-        let pt = self.pt(text)?;
+        let pt = self.pt.get(text, parse_pt)?;
         // The S7-1200 millisecond clock is t_ms modulo 2^32 (trace contract).
         let now = u32::from_u64_wrapping(row.t_ms().unwrap_or(0));
         let input = IecInput {

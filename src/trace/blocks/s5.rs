@@ -13,6 +13,8 @@ use crate::time::S5Time;
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
+use super::PresetCache;
+
 const INPUTS: &[Input] = &[
     Input::bool("S"),
     Input::bool("R"),
@@ -36,7 +38,7 @@ pub(crate) fn lookup(
     Some(Ok(Box::new(S5Block {
         kind,
         timer,
-        tv_cache: None,
+        tv: PresetCache::new(),
     })))
 }
 
@@ -57,7 +59,7 @@ enum Timer {
 struct S5Block {
     kind: S5Kind,
     timer: Timer,
-    tv_cache: Option<(String, S5Time)>,
+    tv: PresetCache<S5Time>,
 }
 
 impl TraceBlock for S5Block {
@@ -79,14 +81,7 @@ impl TraceBlock for S5Block {
 
     fn step(&mut self, row: &Row<'_>, out: &mut Vec<Value>) -> Result<(), CellError> {
         let text = row.preset("TV").unwrap_or("");
-        let tv = match &self.tv_cache {
-            Some((cached, tv)) if cached == text => *tv,
-            _ => {
-                let tv = parse_tv(text)?;
-                self.tv_cache = Some((String::from(text), tv));
-                tv
-            }
-        };
+        let tv = self.tv.get(text, parse_tv)?;
         let input = S5Input {
             s: row.bool("S"),
             r: row.bool("R"),
