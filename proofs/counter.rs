@@ -31,8 +31,15 @@ pub fn prop_step_equivalence<T: CounterInt>(
     );
     let ro = r.call(input);
     // Through the interface, the instruction named in the call is the one that runs.
-    let mut via_trait = CounterRef { kind: CounterKind::Ctud, state };
-    assert_eq!(CounterOps::call(&mut via_trait, kind, input), ro, "CNT-EQUIV-01 via CounterOps");
+    let mut via_trait = CounterRef {
+        kind: CounterKind::Ctud,
+        state,
+    };
+    assert_eq!(
+        CounterOps::call(&mut via_trait, kind, input),
+        ro,
+        "CNT-EQUIV-01 via CounterOps"
+    );
     let po = p.call(kind, input);
     assert_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
     assert_eq!(
