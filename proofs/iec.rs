@@ -106,6 +106,42 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) {
     );
 }
 
+/// One step of IEC-EQUIV-02: applies `op` to both timers, then compares the outputs, the
+/// structure mapped through the abstraction function with the reference state, and the
+/// validity invariant. `step` and `ops` only name the step in the failure message.
+fn sequence_step<C: ClockWord>(
+    r: &mut Reference<C>,
+    opt: &mut IecTimerOf<C>,
+    op: Op<C>,
+    step: usize,
+    ops: &[Op<C>],
+) {
+    let ro = apply(r, op);
+    let oo = apply(opt, op);
+    assert_eq!(oo, ro, "IEC-EQUIV-02 outputs at step {step} of {ops:?}");
+    assert_eq!(
+        opt.abstraction(),
+        r.state,
+        "IEC-EQUIV-02 state at step {step} of {ops:?}"
+    );
+    assert!(
+        opt.is_valid() && r.state.is_valid(),
+        "IEC-ET-RANGE-01 at step {step} of {ops:?}"
+    );
+}
+
+/// IEC-EQUIV-02: from the initial structure, every sequence of operations gives the same
+/// outputs and (through the abstraction function) the same states in the reference and the
+/// 16-byte structure, and every state on the way is valid.
+pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op<C>]) {
+    let mut r = Reference::<C>::new();
+    let mut opt = IecTimerOf::<C>::new();
+    assert_eq!(opt.abstraction(), r.state, "IEC-EQUIV-02 initial state");
+    for (i, &op) in ops.iter().enumerate() {
+        sequence_step(&mut r, &mut opt, op, i, ops);
+    }
+}
+
 /// IEC-ET-RANGE-01, IEC-RT-01, IEC-EDGE-01: after any operation ET is within 0..=PT (the
 /// latched, non-negative preset); after RT, ET = 0 and Q = 0 and the timer is stopped; a stopped
 /// timer starts only on its starting edge (rising IN for TP and TON, falling IN for TOF; for
@@ -325,6 +361,105 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
     });
 }
 
+/// The alphabet of the bounded sequence driver on the 4-bit clock: calls of every kind at
+/// `now` in {0, 2, 7, 14} (so that a START of 14 followed by `now` = 2 crosses the wrap) with
+/// every IN (and R for TONR) and PT in {-1, 0, 5, 15}; reads of Q and ELAPSED at 2 and 14; RT;
+/// the PT coil with 5; RUN-STOP-RUN both ways: 168 operations.
+fn sequence_ops_u4() -> Vec<Op<U4>> {
+    let pts = [-1, 0, 5, 15];
+    all_ops_u4()
+        .into_iter()
+        .filter(|op| match *op {
+            Op::Call(_, now, input) => {
+                [0, 2, 7, 14].contains(&now.0) && pts.contains(&input.pt.as_millis())
+            }
+            Op::ReadQ(now) | Op::ReadEt(now) => now.0 == 2 || now.0 == 14,
+            Op::PtCoil(pt) => pt.as_millis() == 5,
+            Op::Rt | Op::RunStopRun(_) => true,
+        })
+        .collect()
+}
+
+/// Depth-first over every sequence of `depth` more operations from `alphabet`, checking each
+/// step as [`prop_sequence_equivalence`] does; returns the number of steps checked.
+fn sequences_from(
+    r: &Reference<U4>,
+    opt: &IecTimerOf<U4>,
+    alphabet: &[Op<U4>],
+    prefix: &mut Vec<Op<U4>>,
+    depth: usize,
+) -> u64 {
+    if depth == 0 {
+        return 0;
+    }
+    let mut steps = 0;
+    for &op in alphabet {
+        let (mut r2, mut opt2) = (*r, *opt);
+        prefix.push(op);
+        sequence_step(&mut r2, &mut opt2, op, prefix.len() - 1, prefix);
+        steps += 1 + sequences_from(&r2, &opt2, alphabet, prefix, depth - 1);
+        prefix.pop();
+    }
+    steps
+}
+
+/// IEC-EQUIV-02, bounded exhaustive on the 4-bit clock: every sequence of up to 3 operations
+/// from the 168-operation alphabet of [`sequence_ops_u4`] (168 + 168^2 + 168^3 = 4 769 640
+/// steps), from the initial structure. This complements the one-step simulation relation
+/// (which covers every valid state, reachable or not) with the end-to-end view from power-up.
+#[test]
+fn bounded_sequences_u4_from_initial_state() {
+    let alphabet = sequence_ops_u4();
+    assert_eq!(alphabet.len(), 168);
+    let steps = sequences_from(
+        &Reference::new(),
+        &IecTimerOf::new(),
+        &alphabet,
+        &mut Vec::new(),
+        3,
+    );
+    assert_eq!(steps, 168 + 168 * 168 + 168 * 168 * 168);
+}
+
+/// The update on the real `u8` instance of the generic code (no test-only clock): every START
+/// (256) x every `now` (256) x every latched PT (256) for each of the four kinds, a running
+/// timer with ET = 0 called with IN held (the plain update path): 67 million steps of
+/// IEC-EQUIV-01 and the invariants. Every wrap of `now - START` on the 8-bit clock occurs, at
+/// every START; the generic code is the same as on the 32-bit clock.
+#[test]
+fn exhaustive_u8_update_every_start_now_pt() {
+    let kinds = IecKind::ALL;
+    thread::scope(|scope| {
+        for pair in kinds.chunks(2) {
+            scope.spawn(move || {
+                for &kind in pair {
+                    // IN as the running timer holds it: 0 for TOF (timing after the fall), 1 otherwise.
+                    let input = kind != IecKind::Tof;
+                    for start in 0..=255u8 {
+                        for pt in 0..=255u8 {
+                            let state = IecState {
+                                kind: Some(kind),
+                                input,
+                                running: true,
+                                start,
+                                pt,
+                                et: 0,
+                                q: matches!(kind, IecKind::Tp | IecKind::Tof),
+                            };
+                            for now in 0..=255u8 {
+                                let op =
+                                    Op::Call(kind, now, IecInput::new(input, Time::from_millis(5)));
+                                prop_step_equivalence(state, op);
+                                prop_invariants(state, op);
+                            }
+                        }
+                    }
+                }
+            });
+        }
+    });
+}
+
 fn arb_kind() -> impl Strategy<Value = IecKind> {
     prop::sample::select(IecKind::ALL.to_vec())
 }
@@ -388,6 +523,13 @@ proptest! {
         if let Op::Call(kind, now, input) = op {
             prop_table_8_20(state, kind, now, input, Time::from_millis(7));
         }
+    }
+
+    /// IEC-EQUIV-02 on the 32-bit clock: random sequences of up to 40 operations (calls of any
+    /// kind, reads, coils, RUN-STOP-RUN) from the initial structure, times near the wrap.
+    #[test]
+    fn proptest_u32_sequences_from_initial_state(ops in prop::collection::vec(arb_op_u32(), 1..40)) {
+        prop_sequence_equivalence(&ops);
     }
 }
 
@@ -504,6 +646,14 @@ mod kani_harnesses {
             input,
             Time::from_millis(kani::any()),
         );
+    }
+
+    /// IEC-EQUIV-02 on the 32-bit clock: every sequence of three operations from the initial
+    /// structure.
+    #[kani::proof]
+    #[kani::unwind(4)]
+    fn kani_sequence_equivalence() {
+        prop_sequence_equivalence(&[any_op(), any_op(), any_op()]);
     }
 
     /// The IEC invariants on the 32-bit clock, every state and operation.

@@ -122,10 +122,7 @@ fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usi
                 ((false, 0), (false, 0))
             }
         };
-        assert_eq!(
-            oo, ro,
-            "IEC-EQUIV-02: result of event {i} ({e:?}) at {now}"
-        );
+        assert_eq!(oo, ro, "IEC-EQUIV-02: result of event {i} ({e:?}) at {now}");
         assert_eq!(
             opt.abstraction(),
             r.state,
