@@ -66,6 +66,22 @@ fn csv_error(e: csv::Error) -> TraceError {
         | csv::ErrorKind::UnequalLengths { pos: Some(pos), .. } => Some(pos.line()),
         _ => e.position().map(csv::Position::line),
     };
+    // A non-UTF-8 cell is located to its column (the header's name is not known here: it may
+    // be the header itself that is not UTF-8).
+    if let (csv::ErrorKind::Utf8 { err, .. }, Some(line)) = (e.kind(), line) {
+        return TraceError::new(
+            Location::Cell {
+                line,
+                column: err.field() + 1,
+                name: format!("field {}", err.field() + 1),
+            },
+            format!(
+                "the cell is not valid UTF-8 (invalid byte after {} valid bytes); \
+                 traces are UTF-8 text",
+                err.valid_up_to()
+            ),
+        );
+    }
     let message = match e.kind() {
         csv::ErrorKind::UnequalLengths {
             expected_len, len, ..
@@ -221,6 +237,7 @@ fn drive<R: io::Read>(
     input: R,
     presets: &[PresetOption<'_>],
     allow_outputs: bool,
+    mut header: impl FnMut(&Layout, u64) -> Result<(), TraceError>,
     mut sink: impl FnMut(&Layout, u64, &csv::StringRecord, &[Value]) -> Result<bool, TraceError>,
 ) -> Result<(), TraceError> {
     let mut rdr = reader(input);
@@ -233,6 +250,8 @@ fn drive<R: io::Read>(
     }
     let header_line = record.position().map_or(1, csv::Position::line);
     let layout = layout(block, &record, header_line, presets, allow_outputs)?;
+    // Called before any data row, so that a header-only trace still gets its output header.
+    header(&layout, header_line)?;
     let inputs = block.inputs();
     let mut bools = vec![false; inputs.len()];
     let mut outputs = Vec::with_capacity(block.outputs().len());
@@ -326,24 +345,24 @@ pub fn run<R: io::Read, W: io::Write>(
     presets: &[PresetOption<'_>],
     output: W,
 ) -> Result<(), TraceError> {
-    let mut wtr = csv::WriterBuilder::new().flexible(true).from_writer(output);
+    let wtr = csv::WriterBuilder::new().flexible(true).from_writer(output);
     let io_error =
         |e: csv::Error| TraceError::new(Location::Command, format!("cannot write the output: {e}"));
     let output_names = block.outputs();
-    let mut header_written = false;
     let mut fields: Vec<String> = Vec::new();
+    let mut wtr = std::cell::RefCell::new(wtr);
     drive(
         block,
         input,
         presets,
         false,
-        |layout, _line, record, values| {
-            if !header_written {
-                let mut header: Vec<&str> = layout.names.iter().map(String::as_str).collect();
-                header.extend_from_slice(output_names);
-                wtr.write_record(&header).map_err(io_error)?;
-                header_written = true;
-            }
+        |layout, _line| {
+            let mut header: Vec<&str> = layout.names.iter().map(String::as_str).collect();
+            header.extend_from_slice(output_names);
+            wtr.borrow_mut().write_record(&header).map_err(io_error)
+        },
+        |_layout, _line, record, values| {
+            let mut wtr = wtr.borrow_mut();
             fields.clear();
             fields.extend(record.iter().map(str::to_string));
             fields.extend(values.iter().map(Value::to_string));
@@ -351,7 +370,8 @@ pub fn run<R: io::Read, W: io::Write>(
             Ok(true)
         },
     )?;
-    wtr.flush()
+    wtr.get_mut()
+        .flush()
         .map_err(|e| TraceError::new(Location::Command, format!("cannot write the output: {e}")))
 }
 
@@ -384,30 +404,32 @@ pub fn check<R: io::Read>(
         compared: Vec::new(),
         difference: None,
     };
+    let block_name = block.name();
+    let mut compared = Vec::new();
     drive(
         block,
         input,
         presets,
         true,
-        |layout, line, record, values| {
-            if report.rows == 0 {
-                report.compared = output_names
-                    .iter()
-                    .zip(&layout.output_column)
-                    .filter(|(_, c)| c.is_some())
-                    .map(|(n, _)| n.to_string())
-                    .collect();
-                if report.compared.is_empty() {
-                    return Err(TraceError::new(
-                        Location::Line(1),
-                        format!(
-                            "no output column to check; {} writes {}",
-                            "the block",
-                            output_names.join(", ")
-                        ),
-                    ));
-                }
+        |layout, line| {
+            compared = output_names
+                .iter()
+                .zip(&layout.output_column)
+                .filter(|(_, c)| c.is_some())
+                .map(|(n, _)| n.to_string())
+                .collect();
+            if compared.is_empty() {
+                return Err(TraceError::new(
+                    Location::Line(line),
+                    format!(
+                        "no output column to check; {block_name} writes {}",
+                        output_names.join(", ")
+                    ),
+                ));
             }
+            Ok(())
+        },
+        |layout, line, record, values| {
             report.rows += 1;
             for (o, column) in layout.output_column.iter().enumerate() {
                 let Some(index) = *column else { continue };
@@ -426,6 +448,7 @@ pub fn check<R: io::Read>(
             Ok(true)
         },
     )?;
+    report.compared = compared;
     Ok(report)
 }
 
@@ -469,6 +492,7 @@ pub fn record<R: io::Read>(
         input,
         presets,
         false,
+        |_, _| Ok(()),
         |layout, _line, record, values| {
             if row == 0 {
                 rec.timed = layout.time_column.is_some();
