@@ -1,7 +1,7 @@
 //! Properties of the time formats: S5TIME decoding and encoding, literal round-trips for
 //! S5TIME and TIME.
 
-use plc_timers::time::{S5Time, Time, TimeBase};
+use plc_timers::time::{bcd3_decode, bcd3_encode, LiteralErrorKind, S5Time, Time, TimeBase};
 use proptest::prelude::*;
 
 /// S5T-WORD-01, S5T-BCD-01: a raw word decodes exactly when its three value digits are BCD
@@ -89,6 +89,142 @@ pub fn prop_time_literal_round_trip(ms: i32) {
     );
 }
 
+/// S5T-AUTO-BASE-01 as a round trip over words: the automatic encoding of a value's duration
+/// (decode(encode(ms(w)))) has the same duration, a base no coarser, and is the value itself
+/// exactly when the value's base is the automatic one. `to_automatic`/`is_automatic` agree.
+pub fn prop_auto_encoding(t: S5Time) {
+    let a = S5Time::from_millis(u64::from(t.as_millis()))
+        .unwrap_or_else(|e| panic!("S5T-RANGE-01: {t:?} has no encoding: {e}"));
+    assert_eq!(
+        a.as_millis(),
+        t.as_millis(),
+        "S5T-AUTO-BASE-01: same duration"
+    );
+    assert!(
+        a.base() <= t.base(),
+        "S5T-AUTO-BASE-01: never a coarser base"
+    );
+    assert_eq!(
+        a == t,
+        a.base() == t.base(),
+        "S5T-AUTO-BASE-01: the value itself iff on the automatic base"
+    );
+    assert_eq!(t.to_automatic(), a, "S5T-AUTO-BASE-01: to_automatic");
+    assert_eq!(t.is_automatic(), a == t, "S5T-AUTO-BASE-01: is_automatic");
+    assert_eq!(
+        S5Time::from_word(a.to_word()),
+        Ok(a),
+        "S5T-WORD-01: the automatic word decodes to itself"
+    );
+}
+
+/// S5T-BCD-01: the BCD helpers are inverse on 0..=999; the BCD field of a value is its word
+/// without the base bits.
+pub fn prop_bcd3(v: u16) {
+    if v <= 999 {
+        assert_eq!(bcd3_decode(bcd3_encode(v)), Ok(v), "S5T-BCD-01: {v}");
+        assert!(bcd3_encode(v) <= 0x999, "S5T-BCD-01: three digits");
+        let t = S5Time::new(v, TimeBase::S10).expect("units <= 999");
+        assert_eq!(t.bcd(), t.to_word() & 0x0FFF, "S5T-BCD-01: bcd field");
+    } else {
+        assert!(
+            S5Time::new(v, TimeBase::Ms10).is_err(),
+            "S5T-WORD-01: {v} units"
+        );
+    }
+}
+
+/// TIME-ARITH-01: checked and saturating add/sub/neg agree with exact 64-bit arithmetic; the
+/// checked forms fail exactly when the exact result leaves the TIME range.
+pub fn prop_time_arith(a: i32, b: i32) {
+    let (ta, tb) = (Time::from_millis(a), Time::from_millis(b));
+    let exact = |v: i64| Time::from_millis_i64(v);
+    let clamp =
+        |v: i64| Time::from_millis(v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32);
+    let (sum, diff) = (i64::from(a) + i64::from(b), i64::from(a) - i64::from(b));
+    assert_eq!(ta.checked_add(tb), exact(sum), "TIME-ARITH-01: {a} + {b}");
+    assert_eq!(ta.checked_sub(tb), exact(diff), "TIME-ARITH-01: {a} - {b}");
+    assert_eq!(
+        ta.saturating_add(tb),
+        clamp(sum),
+        "TIME-ARITH-01: {a} +| {b}"
+    );
+    assert_eq!(
+        ta.saturating_sub(tb),
+        clamp(diff),
+        "TIME-ARITH-01: {a} -| {b}"
+    );
+    assert_eq!(
+        ta.checked_neg(),
+        exact(-i64::from(a)),
+        "TIME-ARITH-01: -{a}"
+    );
+}
+
+/// S5T-LIT-02: parsing any text never panics; an accepted S5TIME holds the invariant (units
+/// <= 999, at most 9 990 000 ms) and a rejected one says where (an offset inside the text).
+pub fn prop_s5_parse_total(text: &str) {
+    match text.parse::<S5Time>() {
+        Ok(t) => {
+            assert!(t.units() <= 999, "S5T-WORD-01: {text}");
+            assert!(t.as_millis() <= S5Time::MAX_MILLIS, "S5T-RANGE-01: {text}");
+        }
+        Err(e) => assert!(e.position <= text.len(), "S5T-LIT-02: {text}: {e:?}"),
+    }
+    if let Err(e) = text.parse::<Time>() {
+        assert!(e.position <= text.len(), "TIME-LIT-01: {text}: {e:?}");
+    }
+}
+
+/// S5T-LIT-01 from the components: the literal `S5T#{h}H_{m}M_{s}S_{ms}MS` (each component
+/// present or not) is the automatic encoding of its exact total, rounded down; above 9 990 s it
+/// is `OutOfRange`. `h`, `m`, `s`, `ms` are kept in range after the first present one.
+pub fn prop_s5_literal_components(parts: [Option<u32>; 4], underscores: bool, lower: bool) {
+    const UNITS: [(&str, u64); 4] = [("H", 3_600_000), ("M", 60_000), ("S", 1_000), ("MS", 1)];
+    let mut text = String::from(if lower { "s5t#" } else { "S5T#" });
+    let mut total = 0u64;
+    let mut first = true;
+    for (part, (unit, ms)) in parts.iter().zip(UNITS) {
+        let Some(v) = *part else { continue };
+        if !first && underscores {
+            text.push('_');
+        }
+        first = false;
+        total += u64::from(v) * ms;
+        text.push_str(&v.to_string());
+        text.push_str(&if lower {
+            unit.to_ascii_lowercase()
+        } else {
+            unit.to_string()
+        });
+    }
+    let parsed = text.parse::<S5Time>();
+    if first {
+        assert_eq!(
+            parsed.map_err(|e| e.kind),
+            Err(LiteralErrorKind::NoComponents),
+            "{text}"
+        );
+    } else if total > u64::from(S5Time::MAX_MILLIS) {
+        assert_eq!(
+            parsed.map_err(|e| e.kind),
+            Err(LiteralErrorKind::OutOfRange),
+            "S5T-RANGE-01: {text}"
+        );
+    } else {
+        assert_eq!(
+            parsed,
+            S5Time::from_millis(total).map_err(|_| unreachable!()),
+            "S5T-LIT-01: {text}"
+        );
+        let t = parsed.expect("checked above");
+        assert!(
+            u64::from(t.as_millis()) <= total,
+            "S5T-AUTO-BASE-01: rounded down: {text}"
+        );
+    }
+}
+
 /// Exhaustive: all 65 536 raw words.
 #[test]
 fn exhaustive_all_words() {
@@ -155,9 +291,141 @@ fn exhaustive_time_round_trip_near_zero_and_ends() {
     }
 }
 
+/// Exhaustive: the automatic-encoding round trip of all 4 000 valid words (bits 15-14 zero; they
+/// are ignored, so the other 12 000 decodable words give the same values). A value is automatic
+/// iff its base is 10 ms or it has at least 100 units (fewer would fit ten times as many units
+/// of the next finer base): 1 000 + 3 x 900 = 3 700 words, counted independently here.
+#[test]
+fn exhaustive_auto_encoding_all_valid_words() {
+    let (mut valid, mut automatic) = (0, 0);
+    for word in 0..=0x3FFFu16 {
+        let Ok(t) = S5Time::from_word(word) else {
+            continue;
+        };
+        valid += 1;
+        prop_auto_encoding(t);
+        if t.is_automatic() {
+            automatic += 1;
+        }
+        assert_eq!(
+            t.is_automatic(),
+            t.base() == TimeBase::Ms10 || t.units() >= 100,
+            "W#16#{word:04X}"
+        );
+    }
+    assert_eq!((valid, automatic), (4_000, 3_700));
+}
+
+/// Exhaustive: the BCD helpers on every u16 (0..=999 round-trip, above rejected by `new`).
+#[test]
+fn exhaustive_bcd3() {
+    (0..=u16::MAX).for_each(prop_bcd3);
+}
+
+/// TIME arithmetic at the ends: every pair from a set of values around 0 and both range ends
+/// (where the checked forms switch between Some and None).
+#[test]
+fn time_arith_edges() {
+    let edges = [
+        i32::MIN,
+        i32::MIN + 1,
+        i32::MIN + 2,
+        -2,
+        -1,
+        0,
+        1,
+        2,
+        i32::MAX - 2,
+        i32::MAX - 1,
+        i32::MAX,
+        i32::MIN / 2,
+        i32::MAX / 2,
+        i32::MAX / 2 + 1,
+    ];
+    for a in edges {
+        for b in edges {
+            prop_time_arith(a, b);
+        }
+    }
+}
+
+/// S5T-LIT-01 on a grid of component values: each component absent, zero, typical or at its
+/// range end, the first present one also far beyond its range (`S5T#90H`, `S5T#9991S`) and
+/// across the 9 990 s maximum; with and without underscores, upper and lower case.
+#[test]
+fn exhaustive_s5_literal_components_small() {
+    let firsts = [
+        None,
+        Some(0),
+        Some(1),
+        Some(2),
+        Some(3),
+        Some(90),
+        Some(166),
+        Some(167),
+        Some(9_990),
+        Some(9_991),
+    ];
+    let mids = [None, Some(0), Some(7), Some(46), Some(59)];
+    let mss = [None, Some(0), Some(5), Some(10), Some(990), Some(999)];
+    for underscores in [false, true] {
+        for lower in [false, true] {
+            for h in firsts {
+                for m in mids {
+                    for s in mids {
+                        for ms in mss {
+                            // Keep later components in range; the first present may be large.
+                            let parts = [h, m, s, ms];
+                            let first = parts.iter().position(Option::is_some);
+                            let ok = parts.iter().enumerate().all(|(i, p)| match (p, first) {
+                                (Some(v), Some(f)) if i > f => *v < [24, 60, 60, 1_000][i],
+                                _ => true,
+                            });
+                            if ok {
+                                prop_s5_literal_components(parts, underscores, lower);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // Seed 000 Table 9-2's maximum, spelled as in the manual.
+    prop_s5_literal_components([Some(2), Some(46), Some(30), None], true, false);
+}
+
 #[cfg(not(kani))]
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(50_000))]
+
+    /// TIME-ARITH-01 over the whole 32-bit range.
+    #[test]
+    fn proptest_time_arith(a in any::<i32>(), b in any::<i32>()) {
+        prop_time_arith(a, b);
+    }
+
+    /// S5T-LIT-02: arbitrary texts over the literal alphabet never panic the parsers.
+    #[test]
+    fn proptest_s5_parse_total(text in "[sStT5#wW16_0-9hHmMdD.,+ -]{0,16}") {
+        prop_s5_parse_total(&text);
+    }
+
+    /// S5T-LIT-01 over the whole component ranges (first component up to 10 000 units; later
+    /// ones reduced into their range, since out-of-range later components are errors by rule).
+    #[test]
+    fn proptest_s5_literal_components(
+        h in proptest::option::of(0u32..4), m in proptest::option::of(0u32..200),
+        s in proptest::option::of(0u32..12_000), ms in proptest::option::of(0u32..1_000),
+        underscores: bool, lower: bool,
+    ) {
+        let mut parts = [h, m, s, ms];
+        if let Some(f) = parts.iter().position(Option::is_some) {
+            for (i, p) in parts.iter_mut().enumerate().skip(f + 1) {
+                *p = p.map(|v| v % [24, 60, 60, 1_000][i]);
+            }
+        }
+        prop_s5_literal_components(parts, underscores, lower);
+    }
 
     /// TIME-LIT-01 over the whole 32-bit range.
     #[test]
@@ -181,5 +449,38 @@ mod kani_harnesses {
     fn kani_from_millis() {
         let ms: u32 = kani::any();
         prop_from_millis(u64::from(ms));
+    }
+
+    /// S5T-AUTO-BASE-01 round trip for every valid S5TIME (symbolic units <= 999 and base).
+    #[kani::proof]
+    #[kani::unwind(5)]
+    fn kani_auto_encoding() {
+        prop_auto_encoding(kani::any());
+    }
+
+    /// S5T-BCD-01: the BCD helpers for every u16.
+    #[kani::proof]
+    #[kani::unwind(5)]
+    fn kani_bcd3() {
+        prop_bcd3(kani::any());
+    }
+
+    /// TIME-ARITH-01 for every pair of TIMEs.
+    #[kani::proof]
+    fn kani_time_arith() {
+        prop_time_arith(kani::any(), kani::any());
+    }
+
+    /// S5T-LIT-02: the parsers never panic on any ASCII text of up to 6 bytes.
+    #[kani::proof]
+    #[kani::unwind(9)]
+    fn kani_s5_parse_total() {
+        let bytes: [u8; 6] = kani::any();
+        let len: usize = kani::any();
+        kani::assume(len <= bytes.len());
+        kani::assume(bytes.iter().all(u8::is_ascii));
+        if let Ok(text) = core::str::from_utf8(&bytes[..len]) {
+            prop_s5_parse_total(text);
+        }
     }
 }

@@ -182,3 +182,102 @@ fn time_malformed() {
         assert_eq!(time_err(text), *kind, "{text}");
     }
 }
+
+/// More malformed S5TIME shapes: every way a literal can be wrong names the right error kind.
+#[test]
+fn s5t_malformed_shapes() {
+    use plc_timers::time::Unit::*;
+    use LiteralErrorKind::*;
+    let cases: &[(&str, LiteralErrorKind)] = &[
+        (" S5T#1S", Prefix),                        // leading space
+        ("S5T #1S", Prefix),                        // space in the prefix
+        ("S5#1S", Prefix),                          // truncated prefix
+        ("S5TIME#", NoComponents),                  // long prefix, nothing after
+        ("s5t#", NoComponents),                     // lower case, nothing after
+        ("S5T#2_", MissingUnit),                    // separator where the unit goes
+        ("S5T#2 S", UnexpectedChar(' ')),           // space between number and unit
+        ("S5T#2µs", UnknownUnit),                   // non-ASCII unit
+        ("S5T#1US", UnknownUnit),                   // microseconds are not an S5TIME unit
+        ("S5T#1D", UnknownUnit),                    // days neither
+        ("S5T#2M7Sx", UnknownUnit),                 // trailing letters glue to the unit
+        ("S5T#2M7S#", UnexpectedChar('#')),         // trailing garbage
+        ("S5T#2H2H", UnitOrder(Hour)),              // unit twice
+        ("S5T#2MS7S", UnitOrder(Second)),           // units out of order
+        ("S5T#5S_1M", UnitOrder(Minute)),           // units out of order with separator
+        ("S5T#1H_60M", ComponentRange(Minute, 60)), // later component at its limit
+        ("S5T#1S_1000MS", ComponentRange(Milli, 1_000)),
+        ("S5T#1,5S", Fraction),                     // decimal comma
+        ("S5T#1S_-5MS", UnexpectedChar('-')),       // sign inside
+        ("S5T#3H", OutOfRange),                     // above 9 990 s
+        ("S5T#9991S", OutOfRange),                  // one second above
+        ("S5T#9990S_1MS", OutOfRange),              // exact value checked before rounding
+        ("S5TIME#-0MS", OutOfRange),                // negative S5TIME
+        ("S5T#18446744073709551615MS", OutOfRange), // u64::MAX fits the lexer, not S5TIME
+        ("S5T#18446744073709551616MS", Overflow),   // u64::MAX + 1 overflows while parsing
+        ("S5T#18446744073709551615S", Overflow),    // the product overflows u64
+        ("W#16#-123", HexDigits),                   // sign in a word
+        ("W#16#0x12", HexDigits),                   // C-style hex
+        ("W#16#2127 ", HexDigits),                  // trailing space
+        ("W#16#21_27", HexDigits),                  // underscore in a word
+        ("W#16#00A0", BcdDigit(0xA)),               // tens digit
+        ("W#16#000B", BcdDigit(0xB)),               // ones digit
+        ("w#16#3f99", BcdDigit(0xF)),               // hundreds digit, lower case
+        ("W#10#2127", Prefix),                      // wrong radix
+    ];
+    for (text, kind) in cases {
+        assert_eq!(s5_err(text), *kind, "{text}");
+    }
+}
+
+/// More malformed TIME shapes, and the accepted spellings next to them.
+#[test]
+fn time_malformed_shapes() {
+    use plc_timers::time::Unit::*;
+    use LiteralErrorKind::*;
+    let cases: &[(&str, LiteralErrorKind)] = &[
+        ("TIME#", NoComponents),
+        ("t#", NoComponents),
+        ("T#1D_24H", ComponentRange(Hour, 24)),
+        ("T#1D1D", UnitOrder(Day)),
+        ("T#5MS_3S", UnitOrder(Second)),
+        ("T#25D", OutOfRange),
+        ("T#-25D", OutOfRange),
+        ("T#1H-5M", UnexpectedChar('-')),
+        ("T#+5S", UnexpectedChar('+')),
+        ("T#99999999999999999999MS", Overflow),
+        ("99999999999999999999", Overflow),
+        ("- 5", UnexpectedChar(' ')),
+        ("1e3", UnexpectedChar('e')),
+        ("0x10", UnexpectedChar('x')),
+        ("T#5MS_", UnexpectedChar('_')),
+        ("T#5 S", UnexpectedChar(' ')),
+        ("T#5µs", UnknownUnit),
+        ("T#5US", UnknownUnit),
+        ("LT#5S", Prefix),
+        ("-2147483649", OutOfRange),
+    ];
+    for (text, kind) in cases {
+        assert_eq!(time_err(text), *kind, "{text}");
+    }
+    assert_eq!(time("T#-0MS"), 0);
+    assert_eq!(time("+5"), 5);
+    assert_eq!(time("time#1d"), 86_400_000);
+    assert_eq!(time("T#24D"), 2_073_600_000);
+}
+
+/// TIME-ARITH-01 at the seed 001 range ends: one past either end is `None` (checked) or the
+/// end itself (saturating).
+#[test]
+fn time_seed001_arithmetic_at_range_ends() {
+    let one = Time::from_millis(1);
+    assert_eq!(Time::MAX.checked_add(one), None);
+    assert_eq!(Time::MIN.checked_sub(one), None);
+    assert_eq!(Time::MAX.saturating_add(one), Time::MAX);
+    assert_eq!(Time::MIN.saturating_sub(one), Time::MIN);
+    assert_eq!(Time::MIN.checked_neg(), None);
+    assert_eq!(Time::MAX.checked_neg(), Time::MIN.checked_add(one));
+    assert_eq!(
+        Time::from_millis(2_000).checked_add(Time::from_millis(200)),
+        Some(Time::from_millis(2_200))
+    );
+}

@@ -2,6 +2,7 @@
 
 use super::literal::{parse_components, strip_prefix_ci, write_components};
 use super::literal::{LiteralError, LiteralErrorKind};
+use super::S5Time;
 
 /// IEC `TIME`: signed 32-bit milliseconds, `T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -37,6 +38,47 @@ impl Time {
         }
     }
 
+    /// `self + rhs`, or `None` when the sum leaves the TIME range (TIME-ARITH-01).
+    pub const fn checked_add(self, rhs: Time) -> Option<Time> {
+        match self.0.checked_add(rhs.0) {
+            Some(v) => Some(Time(v)),
+            None => None,
+        }
+    }
+
+    /// `self - rhs`, or `None` when the difference leaves the TIME range (TIME-ARITH-01).
+    pub const fn checked_sub(self, rhs: Time) -> Option<Time> {
+        match self.0.checked_sub(rhs.0) {
+            Some(v) => Some(Time(v)),
+            None => None,
+        }
+    }
+
+    /// `self + rhs`, clamped to [`Time::MIN`]`..=`[`Time::MAX`] (TIME-ARITH-01).
+    ///
+    /// ```
+    /// use plc_timers::time::Time;
+    /// assert_eq!(Time::MAX.saturating_add(Time::from_millis(1)), Time::MAX);
+    /// assert_eq!(Time::from_millis(-5).saturating_add(Time::from_millis(7)).as_millis(), 2);
+    /// ```
+    pub const fn saturating_add(self, rhs: Time) -> Time {
+        Time(self.0.saturating_add(rhs.0))
+    }
+
+    /// `self - rhs`, clamped to [`Time::MIN`]`..=`[`Time::MAX`] (TIME-ARITH-01).
+    pub const fn saturating_sub(self, rhs: Time) -> Time {
+        Time(self.0.saturating_sub(rhs.0))
+    }
+
+    /// `-self`, or `None` for [`Time::MIN`], whose negation is one past [`Time::MAX`]
+    /// (TIME-ARITH-01).
+    pub const fn checked_neg(self) -> Option<Time> {
+        match self.0.checked_neg() {
+            Some(v) => Some(Time(v)),
+            None => None,
+        }
+    }
+
     /// The preset as a timer instruction uses it: a negative `PT` is taken as 0 (seed 001,
     /// Table 8-21 note 1).
     pub const fn clamp_negative(self) -> u32 {
@@ -45,6 +87,14 @@ impl Time {
         } else {
             self.0 as u32
         }
+    }
+}
+
+impl From<S5Time> for Time {
+    /// The same duration: an S5TIME is at most 9 990 000 ms, well inside TIME.
+    fn from(t: S5Time) -> Time {
+        // Lossless: as_millis() <= S5Time::MAX_MILLIS < i32::MAX.
+        Time(t.as_millis() as i32)
     }
 }
 

@@ -223,7 +223,14 @@ pub(crate) fn parse_components(
         }
         let letters = &body[unit_start..i];
         let unit = if letters.is_empty() {
-            return Err(err(offset + unit_start, LiteralErrorKind::MissingUnit));
+            // Say what stands where the unit should be: nothing, a separator, a non-ASCII letter
+            // (`5µs`: not a unit), or another character (`5 s`).
+            let kind = match body[unit_start..].chars().next() {
+                None | Some('_') => LiteralErrorKind::MissingUnit,
+                Some(c) if c.is_alphabetic() => LiteralErrorKind::UnknownUnit,
+                Some(c) => LiteralErrorKind::UnexpectedChar(c),
+            };
+            return Err(err(offset + unit_start, kind));
         } else if letters.eq_ignore_ascii_case("d") && days {
             Unit::Day
         } else if letters.eq_ignore_ascii_case("h") {

@@ -13,4 +13,4 @@ mod s5time;
 
 pub use iec_time::Time;
 pub use literal::{LiteralError, LiteralErrorKind, Unit};
-pub use s5time::{bcd3_encode, S5Time, S5TimeError, TimeBase};
+pub use s5time::{bcd3_decode, bcd3_encode, S5Time, S5TimeError, TimeBase};

@@ -13,6 +13,7 @@ use super::literal::{LiteralError, LiteralErrorKind};
 /// The time base of an S5 timer: the interval after which the operating system decrements the
 /// timer value by one unit (seed 000 §9.1, Table 9-1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
 #[repr(u8)]
 pub enum TimeBase {
     /// 10 ms, bits 13-12 = `00`.
@@ -127,6 +128,43 @@ pub const fn bcd3_encode(v: u16) -> u16 {
     (v / 100) << 8 | (v / 10 % 10) << 4 | (v % 10)
 }
 
+/// Decodes the three BCD digits in bits 11-0 of `field` (bits 15-12 ignored) to 0..=999, or
+/// gives the first digit above 9, from the hundreds down, as `(position, digit)` with position
+/// 0 = ones, 1 = tens, 2 = hundreds (S5T-BCD-01).
+///
+/// ```
+/// use plc_timers::time::{bcd3_decode, bcd3_encode};
+/// assert_eq!(bcd3_decode(0x2127), Ok(127));
+/// assert_eq!(bcd3_decode(0x00A1), Err((1, 0xA)));
+/// assert_eq!(bcd3_decode(bcd3_encode(999)), Ok(999));
+/// ```
+pub const fn bcd3_decode(field: u16) -> Result<u16, (u8, u8)> {
+    let mut value = 0u16;
+    let mut position = 3u8;
+    while position > 0 {
+        position -= 1;
+        let digit = ((field >> (4 * position)) & 0xF) as u8;
+        if digit > 9 {
+            return Err((position, digit));
+        }
+        value = value * 10 + digit as u16;
+    }
+    Ok(value)
+}
+
+/// Kani's symbolic S5TIME: any base, any units within the invariant `units <= 999`.
+#[cfg(kani)]
+impl kani::Arbitrary for S5Time {
+    fn any() -> S5Time {
+        let units: u16 = kani::any();
+        kani::assume(units <= 999);
+        S5Time {
+            units,
+            base: kani::any(),
+        }
+    }
+}
+
 impl S5Time {
     /// Zero: `W#16#0000`.
     pub const ZERO: S5Time = S5Time {
@@ -152,32 +190,34 @@ impl S5Time {
     /// Decodes a word: bits 11-0 three BCD digits (each checked), bits 13-12 the base, bits 15-14
     /// ignored (seed 000 §9.1; semantics brief §1).
     pub const fn from_word(word: u16) -> Result<S5Time, S5TimeError> {
-        let mut units = 0u16;
-        let mut position = 3u8;
-        while position > 0 {
-            position -= 1;
-            let digit = ((word >> (4 * position)) & 0xF) as u8;
-            if digit > 9 {
-                return Err(S5TimeError::BcdDigit {
-                    word,
-                    position,
-                    digit,
-                });
-            }
-            units = units * 10 + digit as u16;
+        match bcd3_decode(word) {
+            Ok(units) => Ok(S5Time {
+                units,
+                base: TimeBase::from_bits((word >> 12) as u8),
+            }),
+            Err((position, digit)) => Err(S5TimeError::BcdDigit {
+                word,
+                position,
+                digit,
+            }),
         }
-        Ok(S5Time {
-            units,
-            base: TimeBase::from_bits((word >> 12) as u8),
-        })
     }
 
     /// The word: BCD value in bits 11-0, base in bits 13-12, bits 15-14 zero.
     pub const fn to_word(self) -> u16 {
-        (self.base.bits() as u16) << 12 | bcd3_encode(self.units)
+        (self.base.bits() as u16) << 12 | self.bcd()
     }
 
-    /// The number of time-base units, 0..=999.
+    /// The value field as three BCD digits (bits 11-0, no base): the DEZ/BCD reading of the
+    /// units.
+    #[doc(alias = "DEZ")]
+    pub const fn bcd(self) -> u16 {
+        bcd3_encode(self.units)
+    }
+
+    /// The number of time-base units, 0..=999, in binary (the DUAL/BI reading).
+    #[doc(alias = "DUAL")]
+    #[doc(alias = "BI")]
     pub const fn units(self) -> u16 {
         self.units
     }
@@ -214,6 +254,30 @@ impl S5Time {
         }
         // Unreachable: 9 990 000 / 10 000 = 999 fits the coarsest base.
         Err(S5TimeError::DurationOutOfRange { millis })
+    }
+
+    /// The automatic encoding of this value's duration (what [`S5Time::from_millis`] gives for
+    /// it): the same duration on the finest base that holds it. A value on a coarser base than
+    /// needed (seed 003: `W#16#2001` for 1 s) becomes the preferred form (`W#16#0100`).
+    ///
+    /// ```
+    /// use plc_timers::time::S5Time;
+    /// let t = S5Time::from_word(0x2001)?;
+    /// assert_eq!(t.to_automatic().to_word(), 0x0100);
+    /// # Ok::<(), plc_timers::time::S5TimeError>(())
+    /// ```
+    pub const fn to_automatic(self) -> S5Time {
+        match S5Time::from_millis(self.as_millis() as u64) {
+            Ok(t) => t,
+            // Unreachable: as_millis() <= MAX_MILLIS for every valid value.
+            Err(_) => self,
+        }
+    }
+
+    /// Whether this value is on the automatic base for its duration (`self == self.to_automatic()`).
+    pub const fn is_automatic(self) -> bool {
+        let a = self.to_automatic();
+        a.units == self.units && a.base as u8 == self.base as u8
     }
 }
 
