@@ -381,3 +381,36 @@ fn stl_operations_load_and_status() {
         "T 256 does not exist in a 256-timer area"
     );
 }
+
+/// The LAD box names of seed 000 §9.3-9.7 (the international mnemonic set, Fig. 9-4 ff.) and
+/// the STL operations that start the same timers, in the manual's order.
+#[test]
+fn kind_names_seed000_9_3_to_9_7() {
+    let names = S5Kind::ALL.map(|k| (k.name(), k.stl()));
+    assert_eq!(
+        names,
+        [
+            ("S_PULSE", "SP"),
+            ("S_PEXT", "SE"),
+            ("S_ODT", "SD"),
+            ("S_ODTS", "SS"),
+            ("S_OFFDT", "SF"),
+        ]
+    );
+}
+
+/// Seed 000 §9.1: the time value is three BCD digits, 0 to 999; a state outside that range is
+/// not a timer state, and the packed cell refuses it.
+#[test]
+fn state_validity_seed000_9_1_value_0_to_999() {
+    use plc_timers::s5::cell::Cell;
+    use plc_timers::s5::S5State;
+    let at = |value| S5State {
+        value,
+        ..S5State::RESET
+    };
+    assert!(at(0).is_valid() && at(999).is_valid());
+    assert!(!at(1000).is_valid() && !at(u16::MAX).is_valid());
+    assert!(Cell::from_state(at(999)).is_some());
+    assert!(Cell::from_state(at(1000)).is_none());
+}
