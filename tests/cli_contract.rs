@@ -1,25 +1,9 @@
 //! The built binary against `shared/trace-format.md`: conversions with values derived from the
 //! manuals, and the exit statuses of `run` and `check`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+mod common;
 
-fn plc(args: &[&str], stdin: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_plc-timers"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    // The binary may exit before reading (bad arguments): a broken pipe is not a failure.
-    let _ = child.stdin.take().expect("stdin").write_all(stdin);
-    child.wait_with_output().expect("the binary ends")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use common::{plc, text};
 
 /// CLI-CONV-01: seed 000 Fig. 9-1 shows the time value word `W#16#2127`: base bits 10 (1 s),
 /// BCD 127, so 127 s = 127000 ms, which the automatic base writes back as the same word; the TIME
