@@ -235,3 +235,17 @@ fn s5_counter_presets() {
         assert!(bad.parse::<CounterPreset>().is_err(), "{bad}");
     }
 }
+
+/// The instruction names of seed 004 (CTU, CTD, CTUD) and the S5 counter boxes of the S7-300/400
+/// LAD manual (S_CU, S_CD, S_CUD; semantics brief §4), in that order.
+#[test]
+fn kind_names_seed004() {
+    assert_eq!(
+        CounterKind::ALL.map(CounterKind::name),
+        ["CTU", "CTD", "CTUD"]
+    );
+    assert_eq!(
+        S5CounterKind::ALL.map(S5CounterKind::name),
+        ["S_CU", "S_CD", "S_CUD"]
+    );
+}

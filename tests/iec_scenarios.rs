@@ -381,3 +381,12 @@ fn retentivity_seed001_run_stop_run() {
 fn iec_timer_is_16_bytes_seed001() {
     assert_eq!(std::mem::size_of::<IecTimer>(), 16);
 }
+
+/// The instruction names of seed 001 (TP, TON, TOF, TONR), in the manual's order.
+#[test]
+fn kind_names_seed001() {
+    assert_eq!(
+        IecKind::ALL.map(IecKind::name),
+        ["TP", "TON", "TOF", "TONR"]
+    );
+}
