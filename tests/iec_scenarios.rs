@@ -390,3 +390,28 @@ fn kind_names_seed001() {
         ["TP", "TON", "TOF", "TONR"]
     );
 }
+
+/// The state invariant: ET never exceeds the latched PT (seed 001: ET runs from 0 to PT), and a
+/// stopped timer keeps no START; the 16-byte structure refuses any other state.
+#[test]
+fn state_validity_et_within_pt() {
+    use plc_timers::iec::IecState;
+    let base = IecState::<u32> {
+        pt: 500,
+        et: 500,
+        ..IecState::default()
+    };
+    assert!(base.is_valid());
+    let et_past_pt = IecState { et: 501, ..base };
+    let stopped_with_start = IecState { start: 7, ..base };
+    let running_with_start = IecState {
+        start: 7,
+        running: true,
+        ..base
+    };
+    assert!(!et_past_pt.is_valid() && !stopped_with_start.is_valid());
+    assert!(running_with_start.is_valid());
+    assert!(IecTimer::from_state(base).is_some());
+    assert!(IecTimer::from_state(et_past_pt).is_none());
+    assert!(IecTimer::from_state(stopped_with_start).is_none());
+}
