@@ -86,9 +86,9 @@ fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op<C>) -> (bool, C) {
 
 /// IEC-EQUIV-01: for every valid state and operation, the structure's result and its state
 /// mapped through the abstraction function equal the reference's.
-pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) {
+pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) -> bool {
     let Some(mut opt) = IecTimerOf::from_state(state) else {
-        return;
+        return false;
     };
     assert_eq!(
         opt.abstraction(),
@@ -104,6 +104,7 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) {
         r.state,
         "IEC-EQUIV-01 state {state:?} {op:?}"
     );
+    true
 }
 
 /// One step of IEC-EQUIV-02: applies `op` to both timers, then compares the outputs, the
@@ -146,9 +147,9 @@ pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op<C>]) {
 /// latched, non-negative preset); after RT, ET = 0 and Q = 0 and the timer is stopped; a stopped
 /// timer starts only on its starting edge (rising IN for TP and TON, falling IN for TOF; for
 /// TONR, IN = 1 with R = 0, the decision TONR-RESUME-01).
-pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) {
+pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) -> bool {
     if !state.is_valid() {
-        return;
+        return false;
     }
     let mut r = Reference { state };
     let (q, et) = apply(&mut r, op);
@@ -196,6 +197,7 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) {
         }
         _ => {}
     }
+    true
 }
 
 /// Seed 001 Table 8-20, all kinds: while a timer runs, a change of PT has no effect (the call
@@ -208,7 +210,7 @@ pub fn prop_table_8_20<C: ClockWord>(
     now: C,
     input: IecInput,
     other_pt: Time,
-) {
+) -> bool {
     // "While the timer runs": started, of this kind, not yet at PT at `now`, and with the stored
     // IN a running timer of this kind has (1 for TON and TONR, 0 for TOF): the reachable states.
     let stored_in_consistent = match kind {
@@ -222,7 +224,7 @@ pub fn prop_table_8_20<C: ClockWord>(
         || !stored_in_consistent
         || now.elapsed_since(state.start) >= state.pt
     {
-        return;
+        return false;
     }
     let step = |input: IecInput| {
         let mut r = Reference { state };
@@ -265,6 +267,7 @@ pub fn prop_table_8_20<C: ClockWord>(
         }
         _ => {}
     }
+    true
 }
 
 /// Every valid state on the 4-bit clock: kind (or none) x IN x running x Q x START (any when
@@ -352,22 +355,36 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
     let ops = all_ops_u4();
     assert_eq!(states.len(), 46_240);
     let (a, b) = states.split_at(states.len() / 2);
-    thread::scope(|scope| {
+    let n = thread::scope(|scope| {
+        let mut workers = Vec::new();
         for part in [a, b] {
             let ops = &ops;
-            scope.spawn(move || {
+            workers.push(scope.spawn(move || {
+                let mut n = [0u64; 3];
                 for &state in part {
                     for &op in ops {
-                        prop_step_equivalence(state, op);
-                        prop_invariants(state, op);
+                        n[0] += u64::from(prop_step_equivalence(state, op));
+                        n[1] += u64::from(prop_invariants(state, op));
                         if let Op::Call(kind, now, input) = op {
-                            prop_table_8_20(state, kind, now, input, Time::from_millis(3));
+                            let checked =
+                                prop_table_8_20(state, kind, now, input, Time::from_millis(3));
+                            n[2] += u64::from(checked);
                         }
                     }
                 }
-            });
+                n
+            }));
         }
+        workers
+            .into_iter()
+            .map(|w| w.join().expect("worker finished"))
+            .fold([0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
     });
+    // Every enumerated state is valid, so every (state, operation) pair is checked; Table 8-20
+    // applies to the calls of a running timer of the called kind, a strict, non-empty subset.
+    let all = (states.len() * ops.len()) as u64;
+    assert_eq!((n[0], n[1]), (all, all), "every case checked");
+    assert!(n[2] > 0 && n[2] < all, "{} Table 8-20 cases", n[2]);
 }
 
 /// The alphabet of the bounded sequence driver on the 4-bit clock: calls of every kind at
@@ -438,35 +455,48 @@ fn bounded_sequences_u4_from_initial_state() {
 #[test]
 fn exhaustive_u8_update_every_start_now_pt() {
     let kinds = IecKind::ALL;
-    thread::scope(|scope| {
-        for pair in kinds.chunks(2) {
-            scope.spawn(move || {
-                for &kind in pair {
-                    // IN as the running timer holds it: 0 for TOF (timing after the fall), 1 otherwise.
-                    let input = kind != IecKind::Tof;
-                    for start in 0..=255u8 {
-                        for pt in 0..=255u8 {
-                            let state = IecState {
-                                kind: Some(kind),
-                                input,
-                                running: true,
-                                start,
-                                pt,
-                                et: 0,
-                                q: matches!(kind, IecKind::Tp | IecKind::Tof),
-                            };
-                            for now in 0..=255u8 {
-                                let op =
-                                    Op::Call(kind, now, IecInput::new(input, Time::from_millis(5)));
-                                prop_step_equivalence(state, op);
-                                prop_invariants(state, op);
+    let checked: u64 = thread::scope(|scope| {
+        let workers: Vec<_> = kinds
+            .chunks(2)
+            .map(|pair| {
+                scope.spawn(move || {
+                    let mut n = 0u64;
+                    for &kind in pair {
+                        // IN as the running timer holds it: 0 for TOF (timing after the fall), 1 otherwise.
+                        let input = kind != IecKind::Tof;
+                        for start in 0..=255u8 {
+                            for pt in 0..=255u8 {
+                                let state = IecState {
+                                    kind: Some(kind),
+                                    input,
+                                    running: true,
+                                    start,
+                                    pt,
+                                    et: 0,
+                                    q: matches!(kind, IecKind::Tp | IecKind::Tof),
+                                };
+                                for now in 0..=255u8 {
+                                    let op = Op::Call(
+                                        kind,
+                                        now,
+                                        IecInput::new(input, Time::from_millis(5)),
+                                    );
+                                    n += u64::from(prop_step_equivalence(state, op));
+                                    n += u64::from(prop_invariants(state, op));
+                                }
                             }
                         }
                     }
-                }
-            });
-        }
+                    n
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .map(|w| w.join().expect("worker finished"))
+            .sum()
     });
+    assert_eq!(checked, 2 * 4 * 256 * 256 * 256, "every case checked");
 }
 
 fn arb_kind() -> impl Strategy<Value = IecKind> {
@@ -527,8 +557,9 @@ proptest! {
     /// weighted to the wrap and to the ends of PT.
     #[test]
     fn proptest_u32_step_equivalence_and_invariants(state in arb_state_u32(), op in arb_op_u32()) {
-        prop_step_equivalence(state, op);
-        prop_invariants(state, op);
+        // The strategy yields valid states only: both properties must apply.
+        prop_assert!(prop_step_equivalence(state, op), "state not checked: {:?}", state);
+        prop_assert!(prop_invariants(state, op), "state not checked: {:?}", state);
         if let Op::Call(kind, now, input) = op {
             prop_table_8_20(state, kind, now, input, Time::from_millis(7));
         }
@@ -637,7 +668,8 @@ mod kani_harnesses {
     /// IEC-EQUIV-01 on the 32-bit clock, every state and operation.
     #[kani::proof]
     fn kani_step_equivalence() {
-        prop_step_equivalence(any_state(), any_op());
+        let checked = prop_step_equivalence(any_state(), any_op());
+        kani::cover!(checked, "the premise is reachable");
     }
 
     /// Table 8-20 on the 32-bit clock, every running state, input and pair of presets.
@@ -648,13 +680,14 @@ mod kani_harnesses {
             pt: Time::from_millis(kani::any()),
             reset: kani::any(),
         };
-        prop_table_8_20(
+        let checked = prop_table_8_20(
             any_state(),
             kani::any(),
             kani::any(),
             input,
             Time::from_millis(kani::any()),
         );
+        kani::cover!(checked, "a running timer is reachable");
     }
 
     /// IEC-EQUIV-02 on the 32-bit clock: every sequence of three operations from the initial
@@ -668,6 +701,7 @@ mod kani_harnesses {
     /// The IEC invariants on the 32-bit clock, every state and operation.
     #[kani::proof]
     fn kani_invariants() {
-        prop_invariants(any_state(), any_op());
+        let checked = prop_invariants(any_state(), any_op());
+        kani::cover!(checked, "the premise is reachable");
     }
 }
