@@ -239,9 +239,13 @@ proptest! {
 }
 
 /// SC-EQUIV-01: one packed S5 counter step equals one reference step.
-pub fn prop_s5_step_equivalence(kind: S5CounterKind, state: S5CounterState, input: S5CounterInput) {
+pub fn prop_s5_step_equivalence(
+    kind: S5CounterKind,
+    state: S5CounterState,
+    input: S5CounterInput,
+) -> bool {
     let Some(cell) = S5CounterCell::from_state(state) else {
-        return;
+        return false;
     };
     assert_eq!(
         cell.abstraction(),
@@ -257,13 +261,14 @@ pub fn prop_s5_step_equivalence(kind: S5CounterKind, state: S5CounterState, inpu
         "SC-EQUIV-01 {kind:?} {state:?} {input:?}"
     );
     assert_eq!(cell.output(), ro, "SC-EQUIV-01 outputs");
+    true
 }
 
 /// SC-RANGE-01, SC-Q-01, SC-PRIO-01: CV stays in 0..=999, CV_BCD is its BCD form, Q = CV != 0,
 /// R = 1 gives 0, a rising S (without R) gives PV.
-pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5CounterInput) {
+pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5CounterInput) -> bool {
     if !state.is_valid() {
-        return;
+        return false;
     }
     let mut r = S5CounterRef { kind, state };
     let out = r.call(input);
@@ -284,6 +289,7 @@ pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5Counte
             "SC-SAT-01: counting moves CV by at most 1"
         );
     }
+    true
 }
 
 /// Exhaustive S5 counters: 3 kinds x CV 0..=999 x 8 edge memories x 16 inputs x 5 presets
@@ -291,6 +297,7 @@ pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5Counte
 /// `prop_s5_rules` for each), so five values incl. both ends suffice.
 #[test]
 fn exhaustive_s5_counters() {
+    let mut checked = 0;
     let presets: Vec<CounterPreset> = [0, 1, 500, 998, 999]
         .into_iter()
         .filter_map(|n| CounterPreset::new(n).ok())
@@ -313,13 +320,16 @@ fn exhaustive_s5_counters() {
                             r: bits & 8 != 0,
                             pv,
                         };
-                        prop_s5_step_equivalence(kind, state, input);
-                        prop_s5_rules(kind, state, input);
+                        checked += u32::from(prop_s5_step_equivalence(kind, state, input));
+                        checked += u32::from(prop_s5_rules(kind, state, input));
                     }
                 }
             }
         }
     }
+    // Every enumerated state is valid: both properties apply to every case.
+    assert_eq!(checked, 2 * 3 * 1000 * 8 * presets.len() as u32 * 16);
+    assert_eq!(presets.len(), 5);
 }
 
 /// SC-BCD-01, exhaustive over all 65 536 words: a preset word is accepted exactly when it is
@@ -390,7 +400,8 @@ mod kani_harnesses {
             pv,
         };
         let kind: S5CounterKind = kani::any();
-        prop_s5_step_equivalence(kind, state, input);
+        let checked = prop_s5_step_equivalence(kind, state, input);
+        kani::cover!(checked, "the premise is reachable");
         prop_s5_rules(kind, state, input);
     }
 }
