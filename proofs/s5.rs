@@ -148,6 +148,31 @@ pub fn prop_expiry_on_vth_tick(kind: S5Kind, value: u16, base: TimeBase) -> bool
     true
 }
 
+/// S5-EQUIV-01 (the abstraction): a timer word is valid exactly when the state it stands for is,
+/// and then `from_state` gives the same word back; an invalid word (value field above 999) has
+/// no state. So the abstraction is a bijection between valid words and valid states. Returns
+/// whether the word is valid.
+pub fn prop_cell_word(word: u16) -> bool {
+    let c = Cell(word);
+    let state = cell::abstraction(c);
+    assert_eq!(
+        c.is_valid(),
+        state.is_valid(),
+        "Cell::is_valid agrees with the state invariant: {word:#06X}"
+    );
+    let back = Cell::from_state(state);
+    if c.is_valid() {
+        assert_eq!(
+            back,
+            Some(c),
+            "from_state inverts the abstraction: {word:#06X}"
+        );
+    } else {
+        assert_eq!(back, None, "an invalid word has no state: {word:#06X}");
+    }
+    c.is_valid()
+}
+
 /// The per-kind invariant every reachable state satisfies (seed 000 §9.3-9.7): the pulses have
 /// Q exactly while running (SP-Q-01, SE-Q-01); S_ODT's Q needs S = 1 and the time run out
 /// (SD-Q-01); S_ODTS's Q comes only after the time (SS-Q-01); S_OFFDT has Q while running and
@@ -296,6 +321,14 @@ fn exhaustive_step_equivalence_and_invariants() {
             n[2]
         );
     }
+}
+
+/// Exhaustive: all 65 536 timer words. The valid ones are the 1 000 values 0..=999 times the 64
+/// combinations of the six other bits.
+#[test]
+fn exhaustive_cell_words() {
+    let valid = (0..=u16::MAX).filter(|&w| prop_cell_word(w)).count();
+    assert_eq!(valid, 1000 * 64);
 }
 
 /// Exhaustive over TV: all 4 000 valid S5TIME words x every kind x every combination of the
@@ -527,6 +560,12 @@ mod kani_harnesses {
         let checked =
             prop_expiry_on_vth_tick(kani::any(), kani::any(), TimeBase::from_bits(kani::any()));
         kani::cover!(checked, "the premise is reachable");
+    }
+
+    /// The abstraction is a bijection between valid timer words and valid states.
+    #[kani::proof]
+    fn kani_cell_word() {
+        prop_cell_word(kani::any());
     }
 
     /// S5-AREA-01: a tick of a four-timer area over symbolic cells, base and tick count.

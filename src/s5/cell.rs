@@ -29,6 +29,21 @@ pub const S_PREV: u16 = 1 << 14;
 /// Bit 15: FR at the previous execution.
 pub const FR_PREV: u16 = 1 << 15;
 
+// The six fields partition the word: no two masks share a bit, and together they cover all 16.
+// So `a | b` of two fields equals `a ^ b` and `a + b` (the code uses `|`), and clearing one field
+// (`w & !MASK`) leaves every other field as it was.
+const _: () = {
+    let masks = [VALUE, RUNNING, Q, BASE, S_PREV, FR_PREV];
+    let mut union = 0u16;
+    let mut i = 0;
+    while i < masks.len() {
+        assert!(union & masks[i] == 0, "cell fields overlap");
+        union |= masks[i];
+        i += 1;
+    }
+    assert!(union == u16::MAX, "cell fields leave a bit unused");
+};
+
 /// The BCD form of every value the 10-bit field can hold (0..=1023; only 0..=999 occur).
 pub(crate) const BCD_TABLE: [u16; 1024] = {
     let mut t = [0u16; 1024];
