@@ -9,7 +9,7 @@
 
 use std::thread;
 
-use plc_timers::s5::cell::{self, Cell};
+use plc_timers::s5::cell::{self, Cell, PackedTimer};
 use plc_timers::s5::memory::TimerMemory;
 use plc_timers::s5::reference::S5TimerRef;
 use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State};
@@ -388,10 +388,14 @@ fn exhaustive_expiry_on_vth_tick() {
 
 /// S5-EQUIV-02: from the initial state, the input sequence `steps` (time step in ms, input)
 /// gives the same outputs and states through the reference's `call` (ticks counted from the
-/// clock per timer) and a one-timer `TimerMemory` (ticks applied per base by the area).
+/// clock per timer), a lone `PackedTimer`, a one-timer `TimerMemory` box call (ticks applied per
+/// base by the area), and the STL sequence the box compiles to (`FR`, `SP`..`SF`, `R`, then
+/// `L`, `LC`, `A`) on a second area.
 pub fn prop_sequence_equivalence(kind: S5Kind, steps: &[(u64, S5Input)]) {
     let mut r = S5TimerRef::new(kind);
+    let mut packed = PackedTimer::new();
     let mut area = TimerMemory::<1>::new();
+    let mut stl = TimerMemory::<1>::new();
     let mut t = 0u64;
     for &(dt, input) in steps {
         t = t.saturating_add(dt);
@@ -403,6 +407,26 @@ pub fn prop_sequence_equivalence(kind: S5Kind, steps: &[(u64, S5Input)]) {
             r.state,
             "S5-EQUIV-02 state"
         );
+        assert_eq!(area.now(), t, "the area's clock follows the calls");
+        assert_eq!(
+            packed.call(kind, t, input),
+            a,
+            "S5-EQUIV-02 PackedTimer at t = {t}"
+        );
+        stl.advance_to(t);
+        let ops = [
+            stl.fr(0, kind, input.fr),
+            stl.start(0, kind, input.s, input.tv),
+            stl.reset(0, input.r),
+        ];
+        assert_eq!(ops, [Ok(()); 3], "timer 0 exists");
+        let read = (stl.status(0), stl.load(0), stl.load_bcd(0));
+        assert_eq!(
+            read,
+            (Ok(a.q), Ok(a.bi), Ok(a.bcd)),
+            "S5-EQUIV-02 STL at t = {t}"
+        );
+        assert_eq!(stl.cells(), area.cells(), "S5-EQUIV-02 STL state");
     }
 }
 

@@ -376,10 +376,15 @@ fn stl_operations_load_and_status() {
         (Ok(0), Ok(0)),
         "S5TMR-LOAD-01"
     );
-    assert!(
-        area.load(256).is_err(),
-        "T 256 does not exist in a 256-timer area"
+    let err = area
+        .load(256)
+        .expect_err("T 256 does not exist in a 256-timer area");
+    assert_eq!(
+        err.to_string(),
+        "no timer T 256: this area has T 0 to T 255",
+        "the error names the timer and the valid range"
     );
+    assert_eq!(area.fr(256, S5Kind::SOdt, true), Err(err));
 }
 
 /// The LAD box names of seed 000 §9.3-9.7 (the international mnemonic set, Fig. 9-4 ff.) and
