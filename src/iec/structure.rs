@@ -20,6 +20,13 @@ mod flag {
     pub const KIND_SHIFT: u8 = 4;
     /// Every bit in use.
     pub const ALL: u8 = IN | Q | RUNNING | KIND_VALID | (0b11 << KIND_SHIFT);
+
+    // The five fields are disjoint (their sum is their union), so combining them with `|`, `^`
+    // or `+` is the same and clearing one (`flags & !MASK`) keeps the others.
+    const _: () = assert!(
+        IN as u16 + Q as u16 + RUNNING as u16 + KIND_VALID as u16 + (0b11u16 << KIND_SHIFT)
+            == ALL as u16
+    );
 }
 
 /// Q while running, by kind code (TP, TON, TOF, TONR), as a mask of [`flag::Q`].
