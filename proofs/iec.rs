@@ -582,6 +582,9 @@ pub fn prop_ton_bank(start: u32, steps: &[u32], inputs: &[[u64; 2]], pts: &[i32;
     }
     let mut bank = TonBank::<2>::new();
     let mut refs = vec![Reference::<u32>::new(); 128];
+    // Two words of 64: timers 0..=127 exist, 128 does not.
+    assert_eq!(TonBank::<2>::LEN, refs.len(), "IEC-BANK-01: 64 timers per word");
+    assert_eq!(bank.output(TonBank::<2>::LEN), None);
     let mut now = start;
     for (dt, input) in steps.iter().zip(inputs) {
         now = now.wrapping_add(*dt);
