@@ -104,6 +104,14 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) -> boo
         r.state,
         "IEC-EQUIV-01 state {state:?} {op:?}"
     );
+    // Equal states are equal bytes: the structure is exactly the encoding of the reference
+    // state (no stray flag bits, no stale START), and its accessors read the same members.
+    assert_eq!(
+        IecTimerOf::from_state(r.state),
+        Some(opt),
+        "IEC-EQUIV-01 canonical bytes {state:?} {op:?}"
+    );
+    assert_eq!((opt.pt(), opt.et()), (r.state.pt, r.state.et));
     true
 }
 
@@ -128,6 +136,11 @@ fn sequence_step<C: ClockWord>(
     assert!(
         opt.is_valid() && r.state.is_valid(),
         "IEC-ET-RANGE-01 at step {step} of {ops:?}"
+    );
+    assert_eq!(
+        IecTimerOf::from_state(r.state),
+        Some(*opt),
+        "IEC-EQUIV-02 canonical bytes at step {step} of {ops:?}"
     );
 }
 
@@ -583,7 +596,11 @@ pub fn prop_ton_bank(start: u32, steps: &[u32], inputs: &[[u64; 2]], pts: &[i32;
     let mut bank = TonBank::<2>::new();
     let mut refs = vec![Reference::<u32>::new(); 128];
     // Two words of 64: timers 0..=127 exist, 128 does not.
-    assert_eq!(TonBank::<2>::LEN, refs.len(), "IEC-BANK-01: 64 timers per word");
+    assert_eq!(
+        TonBank::<2>::LEN,
+        refs.len(),
+        "IEC-BANK-01: 64 timers per word"
+    );
     assert_eq!(bank.output(TonBank::<2>::LEN), None);
     let mut now = start;
     for (dt, input) in steps.iter().zip(inputs) {

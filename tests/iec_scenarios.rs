@@ -415,3 +415,33 @@ fn state_validity_et_within_pt() {
     assert!(IecTimer::from_state(et_past_pt).is_none());
     assert!(IecTimer::from_state(stopped_with_start).is_none());
 }
+
+/// A structure restored from raw bytes (retentive memory, an area shared with another runtime)
+/// can hold what no operation produces; `is_valid` tells: no flag bit outside IN (bit 0), Q (1),
+/// RUNNING (2), the kind (4-5) and its valid bit (6); ET within PT; no START while stopped.
+#[test]
+fn structure_validity_from_raw_bytes() {
+    let raw = |start: u32, pt: u32, et: u32, flags: u8| -> IecTimer {
+        let mut bytes = [0u8; 16];
+        bytes[0..4].copy_from_slice(&start.to_ne_bytes());
+        bytes[4..8].copy_from_slice(&pt.to_ne_bytes());
+        bytes[8..12].copy_from_slice(&et.to_ne_bytes());
+        bytes[12] = flags;
+        // SAFETY: `IecTimer` is `#[repr(C)]` { u32, u32, u32, u8 } plus three bytes of padding,
+        // 16 bytes in all (asserted at compile time in src/iec/structure.rs); every field
+        // accepts any bit pattern, so any 16 bytes are a value of the type.
+        unsafe { core::mem::transmute::<[u8; 16], IecTimer>(bytes) }
+    };
+    assert!(
+        raw(0, 500, 500, 0b0101_0010).is_valid(),
+        "TON expired: Q, kind TON"
+    );
+    assert!(
+        raw(7, 500, 0, 0b0100_0101).is_valid(),
+        "TP running with START"
+    );
+    assert!(!raw(0, 500, 500, 0x80).is_valid(), "stray bit 7");
+    assert!(!raw(0, 500, 501, 0).is_valid(), "ET above PT");
+    assert!(!raw(7, 500, 0, 0).is_valid(), "START kept while stopped");
+    assert_eq!(raw(7, 500, 0, 0b0100_0101).pt(), 500);
+}
