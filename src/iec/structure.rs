@@ -9,13 +9,13 @@ use crate::time::Time;
 /// Flag bits of [`IecTimerOf::flags`].
 mod flag {
     /// IN as the last call saw it.
-    pub const IN: u8 = 1 << 0;
+    pub const IN: u8 = 0b0000_0001;
     /// Q.
-    pub const Q: u8 = 1 << 1;
+    pub const Q: u8 = 0b0000_0010;
     /// Timing.
-    pub const RUNNING: u8 = 1 << 2;
+    pub const RUNNING: u8 = 0b0000_0100;
     /// Bits 4-5 hold the last instruction's kind; this bit says one has run.
-    pub const KIND_VALID: u8 = 1 << 6;
+    pub const KIND_VALID: u8 = 0b0100_0000;
     /// Shift of the kind field.
     pub const KIND_SHIFT: u8 = 4;
     /// Every bit in use.
@@ -141,11 +141,12 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 
     #[inline]
-    fn start(&mut self, now: C, pt: Time, k: usize) {
+    fn start(&mut self, now: C, pt: Time) {
         self.start = now;
         self.pt = C::from_preset(pt.clamp_negative());
         self.et = C::default();
-        self.flags = (self.flags & !flag::Q) | flag::RUNNING | Q_RUNNING[k];
+        // Q is left to the `update` that follows every start: it sets Q from the kind and ET.
+        self.flags |= flag::RUNNING;
     }
 
     #[inline]
@@ -184,7 +185,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
             IecKind::Tp => {
                 self.update(now, k);
                 if input.input && !was_in && self.flags & flag::RUNNING == 0 {
-                    self.start(now, input.pt, k);
+                    self.start(now, input.pt);
                     self.update(now, k);
                 }
                 if self.flags & flag::RUNNING == 0 && !input.input {
@@ -196,7 +197,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     self.stop_clear();
                 } else {
                     if !was_in {
-                        self.start(now, input.pt, k);
+                        self.start(now, input.pt);
                     }
                     self.update(now, k);
                 }
@@ -207,7 +208,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     self.flags |= flag::Q;
                 } else {
                     if was_in {
-                        self.start(now, input.pt, k);
+                        self.start(now, input.pt);
                     }
                     self.update(now, k);
                 }
@@ -218,16 +219,15 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 } else if input.input {
                     if !running && self.flags & flag::Q == 0 {
                         let accumulated = self.et;
-                        self.start(now, input.pt, k);
+                        self.start(now, input.pt);
                         self.start = now.elapsed_since(accumulated);
                     }
                     self.update(now, k);
                 } else if running {
                     self.update(now, k);
-                    if self.flags & flag::RUNNING != 0 {
-                        self.flags &= !flag::RUNNING;
-                        self.start = C::default();
-                    }
+                    // Pause (a no-op if the update found the time elapsed: already stopped).
+                    self.flags &= !flag::RUNNING;
+                    self.start = C::default();
                 }
             }
         }
