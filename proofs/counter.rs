@@ -42,6 +42,13 @@ pub fn prop_step_equivalence<T: CounterInt>(
     );
     let po = p.call(kind, input);
     assert_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
+    // The interface's view and the accessor read the same state.
+    assert_eq!(
+        CounterOps::state(&p),
+        p.abstraction(),
+        "CNT-EQUIV-01 via CounterOps"
+    );
+    assert_eq!(p.cv(), po.cv, "CNT-EQUIV-01: CV accessor");
     assert_eq!(
         p.abstraction(),
         r.state,
@@ -223,6 +230,9 @@ proptest! {
     ) {
         let mut bank = CounterBank::<i16, 2>::new();
         let mut refs = vec![CounterRef::<i16>::new(CounterKind::Ctud); 128];
+        // Two words of 64: counters 0..=127 exist, 128 does not.
+        prop_assert_eq!(CounterBank::<i16, 2>::LEN, refs.len());
+        prop_assert_eq!(bank.state(128), None);
         for [cu, cd, r, ld] in scans {
             // Thin out R and LD so that counting is exercised too.
             let r = [r[0] & cu[0] & cd[0], r[1] & cu[1] & cd[1]];

@@ -234,6 +234,24 @@ fn s5_counter_presets() {
     ] {
         assert!(bad.parse::<CounterPreset>().is_err(), "{bad}");
     }
+    // The errors say what was wrong and what is allowed.
+    let message = |text: &str| {
+        text.parse::<CounterPreset>()
+            .expect_err("rejected")
+            .to_string()
+    };
+    assert_eq!(
+        message("C#1000"),
+        "1000 is above the S5 counter maximum of 999"
+    );
+    assert_eq!(
+        message("W#16#0A00"),
+        "W#16#0A00 is not a BCD count: every digit must be 0-9 and the value at most 999"
+    );
+    assert_eq!(
+        message("X#5"),
+        "not a counter preset; write C#0 to C#999, 0 to 999, or W#16#0000 to W#16#0999"
+    );
 }
 
 /// The instruction names of seed 004 (CTU, CTD, CTUD) and the S5 counter boxes of the S7-300/400

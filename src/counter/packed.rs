@@ -17,6 +17,12 @@ pub struct PackedCounter<T> {
     edges: u8,
 }
 
+/// CU and CD as the bits of [`PackedCounter::edges`].
+#[inline]
+const fn edge_bits(cu: bool, cd: bool) -> u8 {
+    (cu as u8) << CU_PREV.trailing_zeros() | (cd as u8) << CD_PREV.trailing_zeros()
+}
+
 impl<T: CounterInt> PackedCounter<T> {
     /// A new counter (CV = 0, no edge seen).
     pub fn new() -> PackedCounter<T> {
@@ -27,7 +33,7 @@ impl<T: CounterInt> PackedCounter<T> {
     pub fn from_state(state: CounterState<T>) -> PackedCounter<T> {
         PackedCounter {
             cv: state.cv,
-            edges: (u8::from(state.cu_prev) * CU_PREV) | (u8::from(state.cd_prev) * CD_PREV),
+            edges: edge_bits(state.cu_prev, state.cd_prev),
         }
     }
 
@@ -50,7 +56,7 @@ impl<T: CounterInt> CounterOps<T> for PackedCounter<T> {
     #[inline]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
         let i = kind.mask(input.signals());
-        let now = (u8::from(i.cu) * CU_PREV) | (u8::from(i.cd) * CD_PREV);
+        let now = edge_bits(i.cu, i.cd);
         let rising = now & !self.edges;
         self.edges = now;
         self.cv = if i.r {
