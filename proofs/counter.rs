@@ -10,8 +10,8 @@
 use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
 use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterPreset, S5CounterCell, S5CounterInput, S5CounterKind, S5CounterRef, S5CounterState,
-    CV_MAX,
+    CounterMemory, CounterPreset, S5CounterCell, S5CounterInput, S5CounterKind, S5CounterRef,
+    S5CounterState, CV_MAX,
 };
 use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterState};
 use proptest::prelude::*;
@@ -340,6 +340,92 @@ fn exhaustive_s5_counters() {
     // Every enumerated state is valid: both properties apply to every case.
     assert_eq!(checked, 2 * 3 * 1000 * 8 * presets.len() as u32 * 16);
     assert_eq!(presets.len(), 5);
+}
+
+/// One STL operation on an S5 counter: `CU`, `CD`, `S` or `R C n` with its RLO.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StlOp {
+    /// `CU C n` (`ZV`).
+    Cu(bool),
+    /// `CD C n` (`ZR`).
+    Cd(bool),
+    /// `S C n` with the preset in ACCU 1.
+    S(bool),
+    /// `R C n`.
+    R(bool),
+}
+
+/// SC-STL-01: each STL operation evaluates only its own input. The model is the reference box
+/// called once per operation with every input line at the RLO its own operation last gave it
+/// (so a line that did not change shows no edge) and R at the RLO of this operation if it is
+/// `R C n`, else 0 (R acts only where it is programmed). The counter memory area's operations
+/// must give the same CV, BCD and status after every operation, from the initial counter.
+pub fn prop_stl_operations(pv: CounterPreset, ops: &[StlOp]) {
+    let mut reference = S5CounterRef::new(S5CounterKind::SCud);
+    let mut area = CounterMemory::<1>::new();
+    let mut lines = S5CounterInput {
+        pv,
+        ..S5CounterInput::default()
+    };
+    for (n, &op) in ops.iter().enumerate() {
+        lines.r = false;
+        let done = match op {
+            StlOp::Cu(rlo) => {
+                lines.cu = rlo;
+                area.cu(0, rlo)
+            }
+            StlOp::Cd(rlo) => {
+                lines.cd = rlo;
+                area.cd(0, rlo)
+            }
+            StlOp::S(rlo) => {
+                lines.s = rlo;
+                area.set(0, rlo, pv)
+            }
+            StlOp::R(rlo) => {
+                lines.r = rlo;
+                area.reset(0, rlo)
+            }
+        };
+        assert_eq!(done, Ok(()), "counter 0 exists");
+        let expected = reference.call(lines);
+        assert_eq!(
+            (area.load(0), area.load_bcd(0), area.status(0)),
+            (Ok(expected.cv), Ok(expected.cv_bcd), Ok(expected.q)),
+            "SC-STL-01 after operation {n} of {ops:?}"
+        );
+    }
+}
+
+/// SC-STL-01 driver: every sequence of 5 operations over the 8 (operation, RLO) pairs (32 768
+/// sequences), with the presets 0, 1 and 999: reaches counting from both sides of the edge
+/// memories, set, reset, and the count after each.
+#[test]
+fn exhaustive_stl_operations() {
+    const SYMBOLS: [StlOp; 8] = [
+        StlOp::Cu(false),
+        StlOp::Cu(true),
+        StlOp::Cd(false),
+        StlOp::Cd(true),
+        StlOp::S(false),
+        StlOp::S(true),
+        StlOp::R(false),
+        StlOp::R(true),
+    ];
+    let mut sequences = 0;
+    for pv in [0, 1, 999] {
+        let pv = CounterPreset::new(pv).expect("at most 999");
+        for mut code in 0..8usize.pow(5) {
+            let mut ops = [StlOp::Cu(false); 5];
+            for op in ops.iter_mut() {
+                *op = SYMBOLS[code % 8];
+                code /= 8;
+            }
+            prop_stl_operations(pv, &ops);
+            sequences += 1;
+        }
+    }
+    assert_eq!(sequences, 3 * 32_768);
 }
 
 /// SC-BCD-01, exhaustive over all 65 536 words: a preset word is accepted exactly when it is

@@ -5,7 +5,7 @@
 use plc_timers::counter::packed::PackedCounter;
 use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+    CounterMemory, CounterPreset, CounterPresetError, S5CounterInput, S5CounterKind, S5CounterRef,
 };
 use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput};
 
@@ -234,6 +234,23 @@ fn s5_counter_presets() {
     ] {
         assert!(bad.parse::<CounterPreset>().is_err(), "{bad}");
     }
+    // One to four hex digits after W#16#; the kind of each error.
+    assert_eq!(
+        "W#16#999"
+            .parse::<CounterPreset>()
+            .map(CounterPreset::value),
+        Ok(999)
+    );
+    for (bad, kind) in [
+        ("W#16#00999", CounterPresetError::Syntax),
+        ("W#16#", CounterPresetError::Syntax),
+        ("C#", CounterPresetError::Syntax),
+        ("C#1.5", CounterPresetError::Syntax),
+        ("C#1000", CounterPresetError::OutOfRange(1000)),
+        ("W#16#0A00", CounterPresetError::BcdDigit(0x0A00)),
+    ] {
+        assert_eq!(bad.parse::<CounterPreset>(), Err(kind), "{bad}");
+    }
     // The errors say what was wrong and what is allowed.
     let message = |text: &str| {
         text.parse::<CounterPreset>()
@@ -266,4 +283,24 @@ fn kind_names_seed004() {
         S5CounterKind::ALL.map(S5CounterKind::name),
         ["S_CU", "S_CD", "S_CUD"]
     );
+}
+
+/// SC-RANGE-01: CV is 0..=999; a state outside is not a counter state, and the packed cell
+/// refuses it. A counter number outside the area is an error that names the valid range.
+#[test]
+fn s5_counter_state_range_and_numbers() {
+    use plc_timers::counter::s5::{S5CounterCell, S5CounterState};
+    let at = |cv| S5CounterState {
+        cv,
+        ..S5CounterState::default()
+    };
+    assert!(at(0).is_valid() && at(999).is_valid());
+    assert!(!at(1000).is_valid());
+    assert!(S5CounterCell::from_state(at(999)).is_some());
+    assert!(S5CounterCell::from_state(at(1000)).is_none());
+    let mut area = CounterMemory::<4>::new();
+    let err = area
+        .cu(4, true)
+        .expect_err("C 4 does not exist in a 4-counter area");
+    assert_eq!(err.to_string(), "no counter C 4: this area has C 0 to C 3");
 }

@@ -268,6 +268,8 @@ const CV: u16 = 0x03FF;
 const CU_PREV: u16 = 1 << 12;
 const CD_PREV: u16 = 1 << 13;
 const S_PREV: u16 = 1 << 14;
+// The four fields are disjoint (their sum is their union), so `|` of two of them is `^` and `+`.
+const _: () = assert!(CV + CU_PREV + CD_PREV + S_PREV == CV | CU_PREV | CD_PREV | S_PREV);
 
 /// The optimized S5 counter: CV in bits 9-0, the edge memories of CU, CD and S in bits 12-14.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
