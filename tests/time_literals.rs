@@ -281,3 +281,14 @@ fn time_seed001_arithmetic_at_range_ends() {
         Some(Time::from_millis(2_200))
     );
 }
+
+/// Seed 001 Table 8-21 note 1: a negative PT is taken as 0; a non-negative one as it is, up to
+/// the largest TIME.
+#[test]
+fn time_seed001_table_8_21_negative_preset_taken_as_zero() {
+    assert_eq!(Time::MIN.clamp_negative(), 0);
+    assert_eq!(Time::from_millis(-1).clamp_negative(), 0);
+    assert_eq!(Time::ZERO.clamp_negative(), 0);
+    assert_eq!(Time::from_millis(500).clamp_negative(), 500);
+    assert_eq!(Time::MAX.clamp_negative(), 2_147_483_647);
+}
