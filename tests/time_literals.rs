@@ -292,3 +292,75 @@ fn time_seed001_table_8_21_negative_preset_taken_as_zero() {
     assert_eq!(Time::from_millis(500).clamp_negative(), 500);
     assert_eq!(Time::MAX.clamp_negative(), 2_147_483_647);
 }
+
+/// Every error kind says where: the byte offset of the token that is wrong (the first byte of a
+/// number for its range or overflow, the unit letter for a unit out of order, the character
+/// itself for a stray one, the start of the value after the prefix for a total out of range).
+/// Offsets counted by hand from the literal.
+#[test]
+fn error_positions_point_at_the_fault() {
+    use plc_timers::time::Unit;
+    use LiteralErrorKind as K;
+    let s5 = [
+        ("", K::Empty, 0),
+        ("X#5S", K::Prefix, 0),
+        ("S5T#", K::NoComponents, 4),
+        ("S5T#5", K::MissingUnit, 5),
+        ("S5T#5Q", K::UnknownUnit, 5),
+        ("S5T#S", K::MissingDigits, 4),
+        ("S5T#1M_S", K::MissingDigits, 7),
+        ("S5T#1.5S", K::Fraction, 5),
+        ("S5T#5 S", K::UnexpectedChar(' '), 5),
+        ("S5T#1S__5MS", K::UnexpectedChar('_'), 7),
+        ("S5T#1S1M", K::UnitOrder(Unit::Minute), 7),
+        ("S5T#1M75S", K::ComponentRange(Unit::Second, 75), 6),
+        ("S5T#1M_75S", K::ComponentRange(Unit::Second, 75), 7),
+        ("S5T#99999999999999999999S", K::Overflow, 4),
+        ("S5T#1S_99999999999999999999MS", K::Overflow, 7),
+        ("W#16#20A1", K::BcdDigit(10), 7),
+        ("S5T#3H", K::OutOfRange, 4),
+    ];
+    for (text, kind, position) in s5 {
+        let e = text.parse::<S5Time>().expect_err(text);
+        assert_eq!((e.kind, e.position), (kind, position), "{text:?}");
+    }
+    let time = [
+        ("T#5X", K::UnknownUnit, 3),
+        ("T#-", K::NoComponents, 3),
+        ("12a", K::UnexpectedChar('a'), 2),
+        ("T#99999999999999999999999MS", K::Overflow, 2),
+        ("T#1S_99999999999999999999MS", K::Overflow, 5),
+        ("T#1H_30S_2M", K::UnitOrder(Unit::Minute), 10),
+        ("T#1H70M", K::ComponentRange(Unit::Minute, 70), 4),
+        ("TIME#-5.5S", K::Fraction, 7),
+        ("T#25D", K::OutOfRange, 2),
+        ("TIME#-25D", K::OutOfRange, 5),
+        ("99999999999", K::OutOfRange, 0),
+    ];
+    for (text, kind, position) in time {
+        let e = text.parse::<Time>().expect_err(text);
+        assert_eq!((e.kind, e.position), (kind, position), "{text:?}");
+    }
+}
+
+/// The message names the literal type and offers the forms of that type.
+#[test]
+fn error_messages_name_the_type_and_its_forms() {
+    let s5 = "X#5S"
+        .parse::<S5Time>()
+        .expect_err("bad prefix")
+        .to_string();
+    let time = "X#5S".parse::<Time>().expect_err("bad prefix").to_string();
+    assert_eq!(
+        s5,
+        "invalid S5TIME literal at byte 0: unknown prefix; write S5T#aH_bbM_ccS_dddMS, S5TIME#… or W#16#wxyz"
+    );
+    assert_eq!(
+        time,
+        "invalid TIME literal at byte 0: unknown prefix; write T#…, TIME#… (e.g. T#2S_200MS, T#-5S) or whole milliseconds"
+    );
+    let s5 = "S5T#5Q".parse::<S5Time>().expect_err("unit").to_string();
+    let time = "T#5Q".parse::<Time>().expect_err("unit").to_string();
+    assert!(s5.ends_with("units are H, M, S, MS"), "{s5}");
+    assert!(time.ends_with("units are D, H, M, S, MS"), "{time}");
+}

@@ -124,24 +124,26 @@ impl core::str::FromStr for Time {
         if text.is_empty() {
             return Err(err(0, LiteralErrorKind::Empty));
         }
-        let (negative, magnitude) =
+        // `value_start`: where the value (with its sign) begins, which a range error points at.
+        let (value_start, negative, magnitude) =
             match strip_prefix_ci(text, "TIME#").or_else(|| strip_prefix_ci(text, "T#")) {
                 Some(body) => {
                     let (negative, rest) = match body.strip_prefix('-') {
                         Some(rest) => (true, rest),
                         None => (false, body),
                     };
-                    (
-                        negative,
-                        parse_components(WHAT, rest, text.len() - rest.len(), true)?,
-                    )
+                    let components = parse_components(WHAT, rest, text.len() - rest.len(), true)?;
+                    (text.len() - body.len(), negative, components)
                 }
-                None => parse_plain_millis(text)?,
+                None => {
+                    let (negative, magnitude) = parse_plain_millis(text)?;
+                    (0, negative, magnitude)
+                }
             };
         // Any magnitude above 2^31 is out of range; capping keeps the sign change exact.
         let capped = magnitude.min(1 << 40) as i64;
         let signed = if negative { -capped } else { capped };
-        Time::from_millis_i64(signed).ok_or(err(0, LiteralErrorKind::OutOfRange))
+        Time::from_millis_i64(signed).ok_or(err(value_start, LiteralErrorKind::OutOfRange))
     }
 }
 
