@@ -317,6 +317,8 @@ fn error_positions_point_at_the_fault() {
         ("S5T#1M_75S", K::ComponentRange(Unit::Second, 75), 7),
         ("S5T#99999999999999999999S", K::Overflow, 4),
         ("S5T#1S_99999999999999999999MS", K::Overflow, 7),
+        // The number fits 64 bits, its product with the unit does not.
+        ("S5T#99999999999999H", K::Overflow, 4),
         ("W#16#20A1", K::BcdDigit(10), 7),
         ("S5T#3H", K::OutOfRange, 4),
     ];
@@ -330,6 +332,7 @@ fn error_positions_point_at_the_fault() {
         ("12a", K::UnexpectedChar('a'), 2),
         ("T#99999999999999999999999MS", K::Overflow, 2),
         ("T#1S_99999999999999999999MS", K::Overflow, 5),
+        ("T#999999999999999D", K::Overflow, 2),
         ("T#1H_30S_2M", K::UnitOrder(Unit::Minute), 10),
         ("T#1H70M", K::ComponentRange(Unit::Minute, 70), 4),
         ("TIME#-5.5S", K::Fraction, 7),
