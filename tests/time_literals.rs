@@ -320,6 +320,11 @@ fn error_positions_point_at_the_fault() {
         // The number fits 64 bits, its product with the unit does not.
         ("S5T#99999999999999H", K::Overflow, 4),
         ("W#16#20A1", K::BcdDigit(10), 7),
+        // One to four hex digits, nothing else (not five with a leading zero, not a sign).
+        ("W#16#", K::HexDigits, 5),
+        ("W#16#00001", K::HexDigits, 5),
+        ("W#16#+123", K::HexDigits, 5),
+        ("S5T#-5S", K::OutOfRange, 4),
         ("S5T#3H", K::OutOfRange, 4),
     ];
     for (text, kind, position) in s5 {
