@@ -42,11 +42,16 @@ pub fn prop_step_equivalence<T: CounterInt>(
     );
     let po = p.call(kind, input);
     assert_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
-    // The interface's view and the accessor read the same state.
+    // The interface's view and the accessor read the same state, in both implementations.
     assert_eq!(
         CounterOps::state(&p),
         p.abstraction(),
         "CNT-EQUIV-01 via CounterOps"
+    );
+    assert_eq!(
+        CounterOps::state(&r),
+        r.state,
+        "CNT-EQUIV-01 reference via CounterOps"
     );
     assert_eq!(p.cv(), po.cv, "CNT-EQUIV-01: CV accessor");
     assert_eq!(
