@@ -20,7 +20,8 @@ pub struct PackedCounter<T> {
 /// CU and CD as the bits of [`PackedCounter::edges`].
 #[inline]
 const fn edge_bits(cu: bool, cd: bool) -> u8 {
-    (cu as u8) << CU_PREV.trailing_zeros() | (cd as u8) << CD_PREV.trailing_zeros()
+    // `(b as u8).wrapping_neg()` is 0xFF for true and 0 for false: a mask that selects the bit.
+    ((cu as u8).wrapping_neg() & CU_PREV) | ((cd as u8).wrapping_neg() & CD_PREV)
 }
 
 impl<T: CounterInt> PackedCounter<T> {
