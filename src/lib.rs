@@ -9,16 +9,63 @@
 //! ID and its source.
 //!
 //! ## Map
-//! - [`time`]: the S5TIME word with its time base and BCD value, and IEC `TIME` (signed 32-bit
-//!   milliseconds) with its literals and the wrapping CPU clock.
-//! - [`s5`]: the S5 timers of S7-300/400 (`S_PULSE`, `S_PEXT`, `S_ODT`, `S_ODTS`, `S_OFFDT`).
-//! - [`iec`]: the IEC timers of S7-1200/1500 (`TP`, `TON`, `TOF`, `TONR`).
-//! - [`counter`]: the IEC counters (`CTU`, `CTD`, `CTUD`) and the S5 counters.
-//! - `trace` (feature `cli`): CSV traces in, reference outputs out; the `plc-timers` command.
+//! Every family has the same shape: a kind enum, input and output structs, a state struct that
+//! both implementations map to, an interface trait, the reference, the optimized form, and a
+//! container of many.
+//!
+//! | family | interface | reference | optimized | many |
+//! |---|---|---|---|---|
+//! | [`s5`] timers (`S_PULSE` … `S_OFFDT`) | [`s5::S5TimerOps`] | [`s5::S5TimerRef`] | [`s5::S5Timer`] | [`s5::TimerMemory`] |
+//! | [`iec`] timers (`TP`, `TON`, `TOF`, `TONR`) | [`iec::IecTimerOps`] | [`iec::IecTimerRef`] | [`iec::IecTimer`] | [`iec::TonBank`] |
+//! | [`counter`]s (`CTU`, `CTD`, `CTUD`) | [`counter::CounterOps`] | [`counter::CounterRef`] | [`counter::Counter`] | [`counter::CounterBank`] |
+//! | [`counter::s5`] counters (`S_CU`, `S_CD`, `S_CUD`) | [`counter::s5::S5CounterOps`] | [`counter::s5::S5CounterRef`] | [`counter::s5::S5Counter`] | [`counter::s5::CounterMemory`] |
+//!
+//! Every timer call takes the CPU time it runs at, a [`time::CpuTime`]: `call(kind, now, input)`;
+//! every counter call `call(kind, input)`. [`time`] has the S5TIME word and IEC `TIME` with their
+//! literals; [`catalog`] names every block with its inputs and outputs.
+//!
+//! ## Quick start, per family
+//!
+//! ```
+//! use plc_timers::time::CpuTime;
+//!
+//! // S5 timers: an S_ODT on-delay of 50 ms.
+//! use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps};
+//! let mut sd = S5Timer::new();
+//! let on = S5Input::new(true, false, plc_timers::s5time!("S5T#50MS"));
+//! sd.call(S5Kind::SOdt, CpuTime::from_millis(0), on);
+//! assert!(sd.call(S5Kind::SOdt, CpuTime::from_millis(50), on).q);
+//!
+//! // IEC timers: a TON of 500 ms.
+//! use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
+//! let mut ton = IecTimer::new();
+//! let on = IecInput::new(true, plc_timers::time!("T#500MS"));
+//! ton.call(IecKind::Ton, CpuTime::from_millis(1_000), on);
+//! assert!(ton.call(IecKind::Ton, CpuTime::from_millis(1_500), on).q);
+//!
+//! // IEC counters: a CTU of type INT counting to 2.
+//! use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
+//! let mut ctu = Counter::<i16>::new();
+//! for cu in [true, false, true] {
+//!     ctu.call(CounterKind::Ctu, CounterInput { cu, pv: 2, ..Default::default() });
+//! }
+//! assert!(ctu.call(CounterKind::Ctu, CounterInput { pv: 2, ..Default::default() }).qu);
+//!
+//! // S5 counters: an S_CD loaded with C#1 and counted down to 0.
+//! use plc_timers::counter::s5::{CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps};
+//! let mut scd = S5Counter::new();
+//! let pv = CounterPreset::new(1).expect("0..=999");
+//! scd.call(S5CounterKind::SCd, S5CounterInput { s: true, pv, ..Default::default() });
+//! assert!(!scd.call(S5CounterKind::SCd, S5CounterInput { cd: true, pv, ..Default::default() }).q);
+//! ```
 //!
 //! ## Time is an input
 //! No block reads a clock: every call takes the CPU time it runs at, so every behaviour is
 //! deterministic, replayable from a trace, and checkable symbolically.
+//!
+//! ## Features
+//! - `std`: `std::error::Error` for the error types. Without it the crate is `no_std` and
+//!   allocation-free.
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
@@ -26,9 +73,11 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod catalog;
 pub mod counter;
 pub mod iec;
+mod operand;
 pub mod s5;
 pub mod time;
-#[cfg(feature = "cli")]
-pub mod trace;
+
+pub use operand::{NoSuchOperand, Operand};

@@ -1,28 +1,36 @@
 //! Counters: the IEC counters `CTU`, `CTD`, `CTUD` of S7-1200/1500 over every integer type
-//! (seed 004; semantics brief §4), and the S5 counters `S_CU`, `S_CD`, `S_CUD` of S7-300/400
-//! ([`s5`]).
+//! (Strączyński lecture; S7-1200 manual, counter instructions), and the S5 counters `S_CU`,
+//! `S_CD`, `S_CUD` of S7-300/400 ([`s5`]).
 //!
-//! IEC counters, one interface and two implementations:
-//! - [`reference::CounterRef`]: the rules one by one, as the manual states them.
-//! - [`packed::PackedCounter`]: CV and both edge memories in one small struct with a
-//!   branch-free step, and [`packed::CounterBank`], a bank that finds the edges of 64 counters
-//!   with one word operation.
+//! IEC counters, one interface ([`CounterOps`]) and two implementations:
+//! - [`CounterRef`]: the rules one by one, as the manual states them.
+//! - [`Counter`]: CV and both edge memories in one small struct with a branch-free step,
+//!
+//! and [`CounterBank`], thousands of CTUD counters scanned together.
 //!
 //! ```
-//! use plc_timers::counter::{reference::CounterRef, CounterInput, CounterKind};
+//! use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps, CounterRef};
 //!
-//! let mut ctu = CounterRef::<i16>::new(CounterKind::Ctu);
 //! let pulse = |cu| CounterInput { cu, pv: 2, ..CounterInput::default() };
-//! for cu in [true, false, true] {
-//!     ctu.call(pulse(cu));
+//! let mut reference = CounterRef::<i16>::new();
+//! let mut optimized = Counter::<i16>::new();
+//! for ctu in [&mut reference as &mut dyn CounterOps<i16>, &mut optimized] {
+//!     for cu in [true, false, true] {
+//!         ctu.call(CounterKind::Ctu, pulse(cu));
+//!     }
+//!     let out = ctu.call(CounterKind::Ctu, pulse(true)); // CU held: no new edge
+//!     assert_eq!((out.cv, out.qu), (2, true));
 //! }
-//! let out = ctu.call(pulse(true)); // CU held: no new edge
-//! assert_eq!((out.cv, out.qu), (2, true));
 //! ```
 
+pub mod bank;
 pub mod packed;
 pub mod reference;
 pub mod s5;
+
+pub use bank::{BankInputs, CounterBank};
+pub use packed::Counter;
+pub use reference::CounterRef;
 
 use core::fmt::Debug;
 
@@ -41,8 +49,6 @@ pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
     fn saturating_inc(self) -> Self;
     /// `self - 1`, staying at `MIN`.
     fn saturating_dec(self) -> Self;
-    /// `self + up - down` saturating, for `up` and `down` not both true; branch-free.
-    fn saturating_step(self, up: bool, down: bool) -> Self;
     /// The value as an `i128` (every type fits).
     fn to_i128(self) -> i128;
     /// The value `v` if it is in the type's range.
@@ -63,10 +69,6 @@ macro_rules! counter_int {
             #[inline]
             fn saturating_dec(self) -> Self {
                 self.saturating_sub(1)
-            }
-            #[inline]
-            fn saturating_step(self, up: bool, down: bool) -> Self {
-                self.saturating_add(up as $t).saturating_sub(down as $t)
             }
             #[inline]
             fn to_i128(self) -> i128 {
@@ -134,6 +136,12 @@ impl CounterKind {
 }
 
 /// The inputs of one call.
+///
+/// ```
+/// use plc_timers::counter::CounterInput;
+/// let input = CounterInput { cu: true, pv: 10i32, ..CounterInput::default() };
+/// assert!(input.cu && !input.r);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct CounterInput<T> {
@@ -184,7 +192,8 @@ pub struct CounterOutput<T> {
     pub cv: T,
 }
 
-/// The observable state of an IEC counter: what the abstraction function produces.
+/// The observable state of an IEC counter: what the abstraction function produces. Every
+/// combination of fields is a state a counter can be in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct CounterState<T> {
@@ -198,13 +207,20 @@ pub struct CounterState<T> {
 
 /// What both IEC counter implementations offer.
 pub trait CounterOps<T: CounterInt> {
-    /// One call of the instruction `kind`.
+    /// One call of the instruction `kind` with its inputs (those it lacks are taken as 0,
+    /// CNT-INPUTS-01).
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T>;
     /// The observable state.
     fn state(&self) -> CounterState<T>;
 }
 
 /// The outputs for `cv` and `pv` (CNT-Q-01): QU = CV >= PV, QD = CV <= 0.
+///
+/// ```
+/// use plc_timers::counter::outputs;
+/// let o = outputs(3i16, 3);
+/// assert!(o.qu && !o.qd);
+/// ```
 pub fn outputs<T: CounterInt>(cv: T, pv: T) -> CounterOutput<T> {
     CounterOutput {
         qu: cv >= pv,

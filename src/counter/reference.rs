@@ -1,26 +1,38 @@
-//! The reference semantics of CTU, CTD and CTUD, one function per rule (seed 004; semantics
-//! brief §4). Rule IDs refer to `spec/requirements/counter.toml`.
+//! The reference semantics of CTU, CTD and CTUD, one function per rule (Strączyński lecture;
+//! S7-1200 manual, counter instructions). Rule IDs refer to `spec/requirements/counter.toml`.
 
 use super::{
     outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
 };
 
-/// One IEC counter instance.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// One IEC counter instance (its instance data: CV and the edge memories).
+///
+/// ```
+/// use plc_timers::counter::{CounterInput, CounterKind, CounterOps, CounterRef};
+/// let mut ctd = CounterRef::<u8>::new();
+/// let out = ctd.call(CounterKind::Ctd, CounterInput { ld: true, pv: 2, ..Default::default() });
+/// assert_eq!(out.cv, 2); // LD loads PV
+/// let out = ctd.call(CounterKind::Ctd, CounterInput { cd: true, pv: 2, ..Default::default() });
+/// assert_eq!((out.cv, out.qd), (1, false));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct CounterRef<T> {
-    /// The instruction this instance runs.
-    pub kind: CounterKind,
-    /// Its state.
-    pub state: CounterState<T>,
+    state: CounterState<T>,
 }
 
 impl<T: CounterInt> CounterRef<T> {
     /// A new instance (CV = 0, no edge seen).
-    pub fn new(kind: CounterKind) -> CounterRef<T> {
-        CounterRef {
-            kind,
-            state: CounterState::default(),
-        }
+    pub const fn new() -> CounterRef<T> {
+        CounterRef::from_state(CounterState {
+            cv: T::ZERO,
+            cu_prev: false,
+            cd_prev: false,
+        })
+    }
+
+    /// The instance in `state` (every counter state is valid).
+    pub const fn from_state(state: CounterState<T>) -> CounterRef<T> {
+        CounterRef { state }
     }
 
     /// CNT-EDGE-01: a count needs a change from 0 to 1; the edge memory takes the input on every
@@ -42,11 +54,13 @@ impl<T: CounterInt> CounterRef<T> {
             _ => cv,
         }
     }
+}
 
+impl<T: CounterInt> CounterOps<T> for CounterRef<T> {
     /// One call with the inputs this kind has (CNT-INPUTS-01). CNT-PRIO-01: R before LD before
     /// counting; R and LD are levels.
-    pub fn call(&mut self, input: CounterInput<T>) -> CounterOutput<T> {
-        let input = input.with_signals(self.kind.mask(input.signals()));
+    fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
+        let input = input.with_signals(kind.mask(input.signals()));
         let (up, down) = self.edges(&input);
         self.state.cv = if input.r {
             T::ZERO
@@ -56,13 +70,6 @@ impl<T: CounterInt> CounterRef<T> {
             Self::count(self.state.cv, up, down)
         };
         outputs(self.state.cv, input.pv)
-    }
-}
-
-impl<T: CounterInt> CounterOps<T> for CounterRef<T> {
-    fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
-        self.kind = kind;
-        CounterRef::call(self, input)
     }
 
     fn state(&self) -> CounterState<T> {

@@ -1,96 +1,145 @@
-//! A bank of TON timers in structure-of-arrays form, for a soft-PLC scanning thousands of
-//! on-delays: IN, Q and "running" are bit sets, so the edges of 64 timers are found with one
-//! word operation, and only timers that start, stop or run are touched. Each timer behaves as
-//! [`super::reference::Reference`] called as `TON` once per scan (checked by
-//! `tests/iec_props.rs`).
+//! A bank of TON timers in structure-of-arrays form, for a soft-PLC that scans thousands of
+//! on-delays: one array per structure member, so that a scan is one pass over each array.
+//! Each timer behaves exactly as [`super::IecTimerRef`] called as `TON` once per scan
+//! (IEC-BANK-01, checked in `proofs/iec.rs`).
 
-use crate::time::Time;
+use super::{IecKind, IecOutput, IecState};
+use crate::time::{CpuTime, Time};
 
-/// `64 * WORDS` TON timers.
+const IN: u8 = 0b001;
+const Q: u8 = 0b010;
+const RUNNING: u8 = 0b100;
+
+/// `N` TON timers, called together once per scan.
+///
+/// ```
+/// use plc_timers::iec::TonBank;
+/// use plc_timers::time::{CpuTime, Time};
+///
+/// // Three conveyors, each with a 2 s on-delay; the scan runs every 500 ms.
+/// let mut delays = TonBank::<3>::new();
+/// let pt = [Time::from_millis(2_000); 3];
+/// let sensors = [true, false, true];
+/// for scan in 0..=4u64 {
+///     delays.scan(CpuTime::from_millis(500 * scan), &sensors, &pt);
+/// }
+/// let q: Vec<bool> = delays.outputs().map(|o| o.q).collect();
+/// assert_eq!(q, [true, false, true]);
+/// assert_eq!(delays.output(0).map(|o| o.et), Some(2_000));
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TonBank<const WORDS: usize> {
-    start: [[u32; 64]; WORDS],
-    pt: [[u32; 64]; WORDS],
-    et: [[u32; 64]; WORDS],
-    input: [u64; WORDS],
-    q: [u64; WORDS],
-    running: [u64; WORDS],
+pub struct TonBank<const N: usize> {
+    start: [u32; N],
+    pt: [u32; N],
+    et: [u32; N],
+    flags: [u8; N],
+    /// Whether a scan has run: before it, no instruction has run on the structures.
+    scanned: bool,
 }
 
-impl<const WORDS: usize> Default for TonBank<WORDS> {
+impl<const N: usize> Default for TonBank<N> {
     fn default() -> Self {
         TonBank::new()
     }
 }
 
-impl<const WORDS: usize> TonBank<WORDS> {
+impl<const N: usize> TonBank<N> {
     /// The number of timers.
-    pub const LEN: usize = 64 * WORDS;
+    pub const LEN: usize = N;
 
-    /// A bank of new timers.
-    pub const fn new() -> TonBank<WORDS> {
+    /// A bank of new timers (every structure zero).
+    pub const fn new() -> TonBank<N> {
         TonBank {
-            start: [[0; 64]; WORDS],
-            pt: [[0; 64]; WORDS],
-            et: [[0; 64]; WORDS],
-            input: [0; WORDS],
-            q: [0; WORDS],
-            running: [0; WORDS],
+            start: [0; N],
+            pt: [0; N],
+            et: [0; N],
+            flags: [0; N],
+            scanned: false,
         }
     }
 
-    /// `Q` and `ET` of timer `i`, if it exists.
-    pub fn output(&self, i: usize) -> Option<(bool, u32)> {
-        let (w, b) = (i / 64, i % 64);
-        let et = *self.et.get(w)?.get(b)?;
-        Some((self.q[w] >> b & 1 != 0, et))
+    /// The outputs `Q` and `ET` of timer `i`, if it exists.
+    pub fn output(&self, i: usize) -> Option<IecOutput<u32>> {
+        Some(IecOutput {
+            q: *self.flags.get(i)? & Q != 0,
+            et: self.et[i],
+        })
     }
 
-    /// One scan at CPU time `now`: every timer called as TON with its IN (bit `i % 64` of word
-    /// `i / 64`) and its preset `pt[i]`.
-    pub fn scan(&mut self, now: u32, input: &[u64; WORDS], pt: &[[Time; 64]; WORDS]) {
-        for w in 0..WORDS {
-            let inp = input[w];
-            let rising = inp & !self.input[w];
-            let falling = !inp & self.input[w];
-            self.input[w] = inp;
-            // IN = 0 resets and stops (Table 8-20); ET can only be non-zero after a falling edge.
-            self.running[w] &= inp;
-            self.q[w] &= inp;
-            each_bit(falling, |b| {
-                self.et[w][b] = 0;
-                self.start[w][b] = 0;
-            });
-            // A rising IN starts: START = now, PT latched, negative taken as 0.
-            each_bit(rising, |b| {
-                self.start[w][b] = now;
-                self.pt[w][b] = pt[w][b].clamp_negative();
-                self.et[w][b] = 0;
-            });
-            self.running[w] |= rising;
-            // The update of every running timer: elapsed = now - START, expiry at ET >= PT.
-            let mut expired = 0u64;
-            let (start, pts, et) = (&mut self.start[w], &self.pt[w], &mut self.et[w]);
-            each_bit(self.running[w], |b| {
-                let elapsed = now.wrapping_sub(start[b]);
-                if elapsed >= pts[b] {
-                    et[b] = pts[b];
-                    start[b] = 0;
-                    expired |= 1 << b;
+    /// The outputs of every timer, timer 0 first.
+    pub fn outputs(&self) -> impl ExactSizeIterator<Item = IecOutput<u32>> + '_ {
+        self.flags.iter().zip(&self.et).map(|(&f, &et)| IecOutput {
+            q: f & Q != 0,
+            et,
+        })
+    }
+
+    /// The state of timer `i` as the reference names it, if it exists.
+    pub fn get(&self, i: usize) -> Option<IecState<u32>> {
+        let f = *self.flags.get(i)?;
+        Some(IecState {
+            kind: self.scanned.then_some(IecKind::Ton),
+            input: f & IN != 0,
+            running: f & RUNNING != 0,
+            start: self.start[i],
+            pt: self.pt[i],
+            et: self.et[i],
+            q: f & Q != 0,
+        })
+    }
+
+    /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `false`, and no change,
+    /// when `i` is out of range or the state is not valid ([`IecState::is_valid`]).
+    pub fn set(&mut self, i: usize, state: IecState<u32>) -> bool {
+        if i >= N || !state.is_valid() {
+            return false;
+        }
+        self.start[i] = state.start;
+        self.pt[i] = state.pt;
+        self.et[i] = state.et;
+        self.flags[i] = u8::from(state.input) * IN
+            | u8::from(state.q) * Q
+            | u8::from(state.running) * RUNNING;
+        true
+    }
+
+    /// One scan at CPU time `now`: timer `i` called as TON with `IN` = `input[i]` and
+    /// `PT` = `pt[i]`.
+    pub fn scan(&mut self, now: CpuTime, input: &[bool; N], pt: &[Time; N]) {
+        let now = now.clock::<u32>();
+        self.scanned = true;
+        for i in 0..N {
+            let f = self.flags[i];
+            if !input[i] {
+                // IN = 0 resets and stops (TON-IN-01).
+                self.start[i] = 0;
+                self.et[i] = 0;
+                self.flags[i] = 0;
+                continue;
+            }
+            let mut running = f & RUNNING != 0;
+            let mut q = f & Q != 0;
+            if f & IN == 0 {
+                // A rising IN starts: START = now, PT latched, negative taken as 0.
+                self.start[i] = now;
+                self.pt[i] = pt[i].clamp_negative();
+                self.et[i] = 0;
+                running = true;
+                q = false;
+            }
+            if running {
+                // The update: elapsed = now - START modulo 2^32, expiry at ET >= PT.
+                let elapsed = now.wrapping_sub(self.start[i]);
+                if elapsed >= self.pt[i] {
+                    self.et[i] = self.pt[i];
+                    self.start[i] = 0;
+                    running = false;
+                    q = true;
                 } else {
-                    et[b] = elapsed;
+                    self.et[i] = elapsed;
                 }
-            });
-            self.running[w] &= !expired;
-            self.q[w] |= expired;
+            }
+            self.flags[i] = IN | u8::from(q) * Q | u8::from(running) * RUNNING;
         }
-    }
-}
-
-#[inline]
-fn each_bit(mut bits: u64, mut f: impl FnMut(usize)) {
-    while bits != 0 {
-        f(bits.trailing_zeros() as usize);
-        bits &= bits - 1;
     }
 }

@@ -1,27 +1,35 @@
 //! IEC timers of S7-1200/1500: `TP`, `TON`, `TOF`, `TONR`, the `-(RT)-` and `-(PT)-` coils,
-//! update-on-access (seed 001; seed 004).
+//! update-on-access (S7-1200 manual, timer instructions; Strączyński lecture).
 //!
-//! Two implementations of one interface, [`IecTimerOps`]:
-//! - [`reference::Reference`]: the rules as the manual states them, one function per rule.
-//! - [`IecTimer`] ([`structure::IecTimerOf`] on the 32-bit clock): the 16-byte `IEC_TIMER`
-//!   structure as a soft-PLC holds it, `#[repr(C)]`, flags packed in one byte.
+//! One interface, [`IecTimerOps`], two implementations:
+//! - [`IecTimerRef`]: the rules as the manual states them, one function per rule.
+//! - [`IecTimer`] ([`IecTimerOf`] on the 32-bit clock): the 16-byte `IEC_TIMER` structure as a
+//!   soft-PLC holds it, `#[repr(C)]`, flags packed in one byte.
 //!
-//! [`structure::IecTimerOf::abstraction`] maps the structure to the reference state; the proofs
-//! in `proofs/iec.rs` show that every operation commutes with it.
+//! and [`TonBank`], thousands of TON timers scanned together.
 //!
-//! Both are generic over the width of the CPU clock ([`ClockWord`]): `u32` is the S7-1200 clock;
-//! `u8` lets the proof drivers enumerate every state.
+//! [`IecTimerOps::state`] maps either to the reference state; the proofs in `proofs/iec.rs` show
+//! that every operation commutes with it.
+//!
+//! Both are generic over the width of the CPU clock word ([`ClockWord`]): `u32` is the S7-1200
+//! clock; narrower words let the proof drivers enumerate every state. Every call takes a
+//! [`CpuTime`], of which the timer sees the low bits.
 //!
 //! ```
-//! use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
-//! use plc_timers::time::Time;
+//! use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
+//! use plc_timers::time::CpuTime;
 //!
-//! let mut t = IecTimer::new();
-//! let pt = Time::from_millis(500);
-//! assert!(!t.call(IecKind::Ton, 1_000, IecInput::new(true, pt)).q); // rising IN: START = 1000
-//! assert!(!t.call(IecKind::Ton, 1_499, IecInput::new(true, pt)).q);
-//! let out = t.call(IecKind::Ton, 1_500, IecInput::new(true, pt)); // ET reaches PT: Q rises
-//! assert_eq!((out.q, out.et), (true, 500));
+//! let pt = plc_timers::time!("T#500MS");
+//! let at = CpuTime::from_millis;
+//! let mut reference = IecTimerRef::<u32>::new();
+//! let mut optimized = IecTimer::new();
+//! for t in [&mut reference as &mut dyn IecTimerOps<u32>, &mut optimized] {
+//!     assert!(!t.call(IecKind::Ton, at(1_000), IecInput::new(true, pt)).q); // START = 1000
+//!     assert!(!t.call(IecKind::Ton, at(1_499), IecInput::new(true, pt)).q);
+//!     let out = t.call(IecKind::Ton, at(1_500), IecInput::new(true, pt)); // ET = PT: Q rises
+//!     assert_eq!((out.q, out.et), (true, 500));
+//! }
+//! assert_eq!(reference.state(), optimized.state());
 //! ```
 
 pub mod bank;
@@ -29,8 +37,10 @@ pub mod reference;
 pub mod structure;
 
 use crate::time::clock::ClockWord;
-use crate::time::Time;
+use crate::time::{CpuTime, Time};
 
+pub use bank::TonBank;
+pub use reference::IecTimerRef;
 pub use structure::{IecTimer, IecTimerOf};
 
 /// Which timer instruction runs on the structure.
@@ -63,12 +73,18 @@ impl IecKind {
 }
 
 /// The box inputs of one call.
+///
+/// ```
+/// use plc_timers::iec::IecInput;
+/// let input = IecInput::new(true, plc_timers::time!("T#1S")).with_reset(true);
+/// assert!(input.input && input.reset);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct IecInput {
     /// `IN`.
     pub input: bool,
-    /// `PT`, the preset; negative values are taken as 0 (seed 001, Table 8-21 note 1).
+    /// `PT`, the preset; negative values are taken as 0 (S7-1200 manual, Table 8-21 note 1).
     pub pt: Time,
     /// `R` (TONR only; ignored by TP, TON and TOF).
     pub reset: bool,
@@ -83,6 +99,12 @@ impl IecInput {
             reset: false,
         }
     }
+
+    /// These inputs with `R` = `reset`.
+    #[must_use]
+    pub const fn with_reset(self, reset: bool) -> IecInput {
+        IecInput { reset, ..self }
+    }
 }
 
 /// The box outputs of one call.
@@ -96,6 +118,16 @@ pub struct IecOutput<C = u32> {
 
 /// The observable state of an IEC timer: what the proofs compare and the abstraction function
 /// produces. Field names are the manual's structure members.
+///
+/// A plain description: any combination of fields can be written, and [`IecState::is_valid`]
+/// says whether a timer can be in it; [`IecTimerRef`] and [`IecTimerOf`] take a state only
+/// through their checking `from_state`.
+///
+/// ```
+/// use plc_timers::iec::IecState;
+/// assert!(IecState::<u32>::default().is_valid());
+/// assert!(!IecState::<u32> { et: 5, pt: 4, ..Default::default() }.is_valid()); // ET > PT
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct IecState<C> {
     /// The instruction that last ran on the structure (`None` before the first call); needed
@@ -124,14 +156,14 @@ impl<C: ClockWord> IecState<C> {
 }
 
 /// The operations of an IEC timer structure, common to the reference and the optimized one.
-/// `now` is the CPU millisecond clock (modulo `2^BITS`).
+/// `now` is the CPU time; the timer computes with its low `C::BITS` bits, the wrapping clock.
 pub trait IecTimerOps<C: ClockWord> {
     /// Executes the box (or coil) instruction `kind` with its inputs; returns `Q` and `ET`.
-    fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C>;
-    /// Reads the structure's `Q` member: an update at `now` happens first (seed 001).
-    fn read_q(&mut self, now: C) -> bool;
-    /// Reads the structure's `ELAPSED` member: an update at `now` happens first (seed 001).
-    fn read_et(&mut self, now: C) -> C;
+    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C>;
+    /// Reads the structure's `Q` member: an update at `now` happens first (IEC-ACCESS-01).
+    fn read_q(&mut self, now: CpuTime) -> bool;
+    /// Reads the structure's `ELAPSED` member: an update at `now` happens first (IEC-ACCESS-01).
+    fn read_et(&mut self, now: CpuTime) -> C;
     /// The `-(RT)-` coil with power flow: resets the timer data (see `spec/iec.md`, IEC-RT-01).
     fn reset_timer(&mut self);
     /// The `-(PT)-` coil with power flow: loads `pt` into the structure's preset.

@@ -1,18 +1,30 @@
 //! The reference semantics of the IEC timers, one function per rule of the manual.
 //!
-//! Sources: seed 001 (S7-1200 system manual, "Timer instructions", Tables 8-19 to 8-22 and the
-//! "Timer operation" / "Timer programming" notes), seed 004 (lecture, same table). Rule IDs refer
-//! to `spec/requirements/iec.toml`.
+//! Sources: S7-1200 manual, timer instructions (Tables 8-19 to 8-22 and the "Timer operation" /
+//! "Timer programming" notes); Strączyński lecture (same table). Rule IDs refer to
+//! `spec/requirements/iec.toml`.
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::time::clock::ClockWord;
-use crate::time::Time;
+use crate::time::{CpuTime, Time};
 
-/// The reference model of one `IEC_TIMER` structure.
+/// The reference model of one `IEC_TIMER` structure on a clock word `C` (`u32` on the CPU).
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
+/// use plc_timers::time::CpuTime;
+///
+/// let pt = plc_timers::time!("T#100MS");
+/// let mut tp = IecTimerRef::<u32>::new();
+/// let at = CpuTime::from_millis;
+/// assert!(tp.call(IecKind::Tp, at(0), IecInput::new(true, pt)).q); // the pulse starts
+/// assert!(tp.call(IecKind::Tp, at(50), IecInput::new(false, pt)).q); // IN has no effect
+/// assert!(!tp.call(IecKind::Tp, at(100), IecInput::new(false, pt)).q); // ET = PT: over
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Reference<C> {
+pub struct IecTimerRef<C> {
     /// The structure's members, named as in the manual.
-    pub state: IecState<C>,
+    state: IecState<C>,
 }
 
 /// `PT` as the instruction uses it: negative taken as 0 (IEC-PT-NEG-01), in clock units.
@@ -30,10 +42,25 @@ fn q_after_expiry(kind: IecKind) -> bool {
     matches!(kind, IecKind::Ton | IecKind::Tonr)
 }
 
-impl<C: ClockWord> Reference<C> {
+impl<C: ClockWord> IecTimerRef<C> {
     /// The initial structure: everything 0 (a new or non-retentive instance DB).
-    pub fn new() -> Reference<C> {
-        Reference::default()
+    pub const fn new() -> IecTimerRef<C> {
+        IecTimerRef {
+            state: IecState {
+                kind: None,
+                input: false,
+                running: false,
+                start: C::ZERO,
+                pt: C::ZERO,
+                et: C::ZERO,
+                q: false,
+            },
+        }
+    }
+
+    /// The timer in `state`, or `None` when the state is not valid ([`IecState::is_valid`]).
+    pub fn from_state(state: IecState<C>) -> Option<IecTimerRef<C>> {
+        state.is_valid().then_some(IecTimerRef { state })
     }
 
     /// IEC-START-01: on the starting edge the CPU clock is copied into START and the preset is
@@ -146,8 +173,9 @@ impl<C: ClockWord> Reference<C> {
     }
 }
 
-impl<C: ClockWord> IecTimerOps<C> for Reference<C> {
-    fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C> {
+impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
+    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+        let now = now.clock::<C>();
         match kind {
             IecKind::Tp => self.tp(now, input),
             IecKind::Ton => self.ton(now, input),
@@ -163,23 +191,24 @@ impl<C: ClockWord> IecTimerOps<C> for Reference<C> {
     }
 
     /// IEC-ACCESS-01: reading Q through the structure updates the timer first.
-    fn read_q(&mut self, now: C) -> bool {
+    fn read_q(&mut self, now: CpuTime) -> bool {
         if let Some(kind) = self.state.kind {
-            self.update(now, kind);
+            self.update(now.clock(), kind);
         }
         self.state.q
     }
 
     /// IEC-ACCESS-01: reading ELAPSED through the structure updates the timer first.
-    fn read_et(&mut self, now: C) -> C {
+    fn read_et(&mut self, now: CpuTime) -> C {
         if let Some(kind) = self.state.kind {
-            self.update(now, kind);
+            self.update(now.clock(), kind);
         }
         self.state.et
     }
 
-    /// IEC-RT-01: the timer data is zeroed (seed 004: "wyzerowanie danych timera"; seed 001:
-    /// ELAPSED reset to 0): ET, Q, the running status and the stored IN; the preset stays.
+    /// IEC-RT-01: the timer data is zeroed (Strączyński lecture: "wyzerowanie danych timera";
+    /// S7-1200 manual: ELAPSED reset to 0): ET, Q, the running status and the stored IN; the
+    /// preset stays.
     fn reset_timer(&mut self) {
         self.reset_and_stop();
         self.state.input = false;
@@ -195,7 +224,7 @@ impl<C: ClockWord> IecTimerOps<C> for Reference<C> {
     /// IEC-RETAIN-01: timer data is lost on RUN-STOP-RUN unless the structure is retentive.
     fn run_stop_run(&mut self, retentive: bool) {
         if !retentive {
-            *self = Reference::new();
+            *self = IecTimerRef::new();
         }
     }
 

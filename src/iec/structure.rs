@@ -1,10 +1,10 @@
-//! The `IEC_TIMER` structure as a soft-PLC holds it: 16 bytes, `#[repr(C)]` (seed 001: "each
-//! timer uses a 16-byte IEC_Timer structure"), with IN, Q, the running status and the last
+//! The `IEC_TIMER` structure as a soft-PLC holds it: 16 bytes, `#[repr(C)]` (S7-1200 manual:
+//! "each timer uses a 16-byte IEC_Timer structure"), with IN, Q, the running status and the last
 //! instruction packed into one flag byte.
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::time::clock::ClockWord;
-use crate::time::Time;
+use crate::time::{CpuTime, Time};
 
 /// Flag bits of [`IecTimerOf::flags`].
 mod flag {
@@ -47,10 +47,23 @@ const fn kind_of(code: u8) -> IecKind {
     }
 }
 
-/// The `IEC_TIMER` structure over a clock of width `C`.
+/// The `IEC_TIMER` structure over a clock word `C`.
 ///
 /// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each), one
-/// flag byte, three bytes of padding.
+/// flag byte, three bytes of padding. The fields are private: every structure this type holds is
+/// one the operations can reach ([`IecTimerOf::from_state`] checks).
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
+/// use plc_timers::time::CpuTime;
+///
+/// // The self-resetting timer of the S7-1200 manual: reading Q through the structure updates it.
+/// let pt = plc_timers::time!("T#1S");
+/// let mut t = IecTimer::new();
+/// t.call(IecKind::Ton, CpuTime::from_millis(0), IecInput::new(true, pt));
+/// assert!(t.read_q(CpuTime::from_millis(1_000))); // the read itself finds the time run out
+/// assert_eq!(core::mem::size_of::<IecTimer>(), 16);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C)]
 pub struct IecTimerOf<C> {
@@ -68,8 +81,13 @@ const _: () = assert!(core::mem::size_of::<IecTimer>() == 16);
 
 impl<C: ClockWord> IecTimerOf<C> {
     /// The initial structure (all zero).
-    pub fn new() -> IecTimerOf<C> {
-        IecTimerOf::default()
+    pub const fn new() -> IecTimerOf<C> {
+        IecTimerOf {
+            start: C::ZERO,
+            pt: C::ZERO,
+            et: C::ZERO,
+            flags: 0,
+        }
     }
 
     /// The structure holding `state`, or `None` if `state` violates [`IecState::is_valid`].
@@ -93,8 +111,9 @@ impl<C: ClockWord> IecTimerOf<C> {
         })
     }
 
-    /// The abstraction function: the reference state this structure represents.
-    pub fn abstraction(&self) -> IecState<C> {
+    /// The abstraction function: the reference state this structure represents (also
+    /// [`IecTimerOps::state`]).
+    fn abstraction(&self) -> IecState<C> {
         let f = self.flags;
         IecState {
             kind: (f & flag::KIND_VALID != 0).then(|| kind_of(f >> flag::KIND_SHIFT)),
@@ -105,12 +124,6 @@ impl<C: ClockWord> IecTimerOf<C> {
             et: self.et,
             q: f & flag::Q != 0,
         }
-    }
-
-    /// Whether the raw fields are a state the operations can reach: no stray flag bits and
-    /// the [`IecState::is_valid`] invariant.
-    pub fn is_valid(&self) -> bool {
-        self.flags & !flag::ALL == 0 && self.abstraction().is_valid()
     }
 
     /// The latched preset `PT` in milliseconds, as stored (no update).
@@ -159,7 +172,8 @@ impl<C: ClockWord> IecTimerOf<C> {
 
 impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline]
-    fn call(&mut self, kind: IecKind, now: C, input: IecInput) -> IecOutput<C> {
+    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+        let now = now.clock::<C>();
         let k = code(kind);
         // Fast path: a stopped timer of the same kind whose IN did not change has nothing to do
         // when the call would leave every member as it is (checked by the equivalence proofs).
@@ -239,17 +253,17 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     }
 
     #[inline]
-    fn read_q(&mut self, now: C) -> bool {
+    fn read_q(&mut self, now: CpuTime) -> bool {
         if self.flags & flag::KIND_VALID != 0 {
-            self.update(now, usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+            self.update(now.clock(), usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
         }
         self.flags & flag::Q != 0
     }
 
     #[inline]
-    fn read_et(&mut self, now: C) -> C {
+    fn read_et(&mut self, now: CpuTime) -> C {
         if self.flags & flag::KIND_VALID != 0 {
-            self.update(now, usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+            self.update(now.clock(), usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
         }
         self.et
     }
@@ -266,7 +280,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
 
     fn run_stop_run(&mut self, retentive: bool) {
         if !retentive {
-            *self = IecTimerOf::default();
+            *self = IecTimerOf::new();
         }
     }
 

@@ -1,44 +1,51 @@
-//! A timer memory area (seed 000 §9.1: "timers have their own reserved memory area in the CPU;
-//! a 16-bit word for each timer"; LAD addresses 256) with the STL operations on it.
+//! A timer memory area (LAD manual §9.1: "timers have their own reserved memory area in the
+//! CPU; a 16-bit word for each timer"; LAD addresses 256) with the STL operations on it.
 //!
 //! The operating system's tick of each base updates every running timer of that base in one
 //! pass over the area ([`TimerMemory::tick`]); the STL operations act on one timer.
 
-use core::fmt;
+use super::word::{TimerWord, BASE, RUNNING};
+use super::{S5Input, S5Kind, S5Output, S5State};
+use crate::operand::{NoSuchOperand, Operand};
+use crate::time::{CpuTime, S5Time, TimeBase};
 
-use super::cell::{Cell, BASE, RUNNING};
-use super::{S5Input, S5Kind, S5Output};
-use crate::time::{S5Time, TimeBase};
-
-/// An STL operation named a timer the area does not have.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct NoSuchTimer {
-    /// The timer number given.
-    pub index: usize,
-    /// How many timers the area has (`T 0` .. `T count-1`).
-    pub count: usize,
-}
-
-impl fmt::Display for NoSuchTimer {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "no timer T {}: this area has T 0 to T {}",
-            self.index,
-            self.count.saturating_sub(1)
-        )
-    }
-}
-
-#[cfg(feature = "std")]
-impl std::error::Error for NoSuchTimer {}
-
-/// A timer memory area of `N` timers (256 by default, the number LAD can address) and the CPU
-/// time up to which the operating system's ticks have been applied.
+/// A timer memory area of `N` timers (`T 0` .. `T N-1`; 256 by default, the number LAD can
+/// address) and the CPU time up to which the operating system's ticks have been applied.
+///
+/// # Which method when
+/// - **A program of LAD boxes** (one box per timer per scan): [`TimerMemory::call`]. It first
+///   brings the area's clock to the call's time ([`TimerMemory::advance_to`]), then executes
+///   the box, exactly like [`super::S5TimerRef`] does for one timer.
+/// - **An STL program** (`FR`, `SP`…`SF`, `R`, `L`, `LC`, `A` on timer operands): call
+///   [`TimerMemory::advance_to`] once per scan (or whenever the program reads the clock), then
+///   the operations ([`TimerMemory::start`], [`TimerMemory::reset`], [`TimerMemory::load`], …),
+///   which act on the words as they are.
+/// - **A runtime that owns the OS time base**, with an interrupt every 10 ms, 100 ms, 1 s and
+///   10 s: [`TimerMemory::tick`] with the base that fired, and no `advance_to` (the two keep
+///   time in different ways; use one of them).
+///
+/// ```
+/// use plc_timers::s5::{S5Input, S5Kind, TimerMemory};
+/// use plc_timers::time::CpuTime;
+///
+/// // A scan loop: T 0 an on-delay of 30 ms, T 1 a pulse of 1 s, every 10 ms.
+/// let mut timers = TimerMemory::<2>::new();
+/// let (delay, pulse) = (plc_timers::s5time!("S5T#30MS"), plc_timers::s5time!("S5T#1S"));
+/// for scan in 0..5u64 {
+///     let now = CpuTime::from_millis(10 * scan);
+///     let sd = timers.call(0, S5Kind::SOdt, now, S5Input::new(true, false, delay))?;
+///     let sp = timers.call(1, S5Kind::SPulse, now, S5Input::new(true, false, pulse))?;
+///     assert_eq!(sd.q, scan >= 3); // on after three 10 ms ticks
+///     assert!(sp.q);
+/// }
+/// let running: Vec<bool> = timers.outputs().map(|o| o.q).collect();
+/// assert_eq!(running, [true, true]);
+/// # Ok::<(), plc_timers::NoSuchOperand>(())
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TimerMemory<const N: usize = 256> {
-    cells: [Cell; N],
-    now: u64,
+    words: [TimerWord; N],
+    now: CpuTime,
 }
 
 impl<const N: usize> Default for TimerMemory<N> {
@@ -48,89 +55,114 @@ impl<const N: usize> Default for TimerMemory<N> {
 }
 
 impl<const N: usize> TimerMemory<N> {
+    /// The number of timers.
+    pub const LEN: usize = N;
+
     /// An area of cleared timers at CPU time 0.
     pub const fn new() -> TimerMemory<N> {
         TimerMemory {
-            cells: [Cell::RESET; N],
-            now: 0,
+            words: [TimerWord::RESET; N],
+            now: CpuTime::ZERO,
         }
     }
 
-    /// An area holding `cells`, with the OS ticks applied up to `now` (for restoring a saved
+    /// An area holding `words`, with the OS ticks applied up to `now` (for restoring a saved
     /// area, and for the proofs).
-    pub const fn from_cells(cells: [Cell; N], now: u64) -> TimerMemory<N> {
-        TimerMemory { cells, now }
+    pub const fn from_words(words: [TimerWord; N], now: CpuTime) -> TimerMemory<N> {
+        TimerMemory { words, now }
     }
 
-    /// The cells, for inspection (and for the abstraction function of each timer).
-    pub const fn cells(&self) -> &[Cell; N] {
-        &self.cells
+    /// The timer words.
+    pub const fn words(&self) -> &[TimerWord; N] {
+        &self.words
     }
 
     /// The CPU time up to which ticks have been applied.
-    pub const fn now(&self) -> u64 {
+    pub const fn now(&self) -> CpuTime {
         self.now
     }
 
-    fn cell(&mut self, index: usize) -> Result<&mut Cell, NoSuchTimer> {
-        self.cells
-            .get_mut(index)
-            .ok_or(NoSuchTimer { index, count: N })
+    /// The state of timer `index`.
+    pub fn get(&self, index: usize) -> Result<S5State, NoSuchOperand> {
+        self.read(index).map(TimerWord::state)
     }
 
-    fn read(&self, index: usize) -> Result<Cell, NoSuchTimer> {
-        self.cells
+    /// Puts timer `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
+    pub fn set(&mut self, index: usize, state: S5State) -> Result<bool, NoSuchOperand> {
+        let w = self.word(index)?;
+        Ok(match TimerWord::from_state(state) {
+            Some(new) => {
+                *w = new;
+                true
+            }
+            None => false,
+        })
+    }
+
+    /// The outputs (Q, BI, BCD) of every timer, `T 0` first.
+    pub fn outputs(&self) -> impl ExactSizeIterator<Item = S5Output> + '_ {
+        self.words.iter().map(|w| w.output())
+    }
+
+    fn word(&mut self, index: usize) -> Result<&mut TimerWord, NoSuchOperand> {
+        self.words
+            .get_mut(index)
+            .ok_or(NoSuchOperand::new(Operand::Timer, index, N))
+    }
+
+    fn read(&self, index: usize) -> Result<TimerWord, NoSuchOperand> {
+        self.words
             .get(index)
             .copied()
-            .ok_or(NoSuchTimer { index, count: N })
+            .ok_or(NoSuchOperand::new(Operand::Timer, index, N))
     }
 
     /// `n` ticks of `base` for the whole area: every running timer of that base loses
     /// `min(n, value)` units (S5TMR-TICK-01). One branch-free pass over the words.
     pub fn tick(&mut self, base: TimeBase, n: u64) {
         if n == 1 {
-            let bits = u16::from(base.bits());
-            for cell in self.cells.iter_mut() {
-                *cell = cell.tick_once(bits);
+            let bits = u32::from(base.bits());
+            for w in self.words.iter_mut() {
+                *w = w.tick_once(bits);
             }
             return;
         }
-        let b = (base.bits() as u16) << 12;
-        for cell in self.cells.iter_mut() {
-            // Cells of another base are ticked with 0, which leaves them unchanged; selecting
+        let b = u32::from(base.bits()) << 12;
+        for w in self.words.iter_mut() {
+            // Words of another base are ticked with 0, which leaves them unchanged; selecting
             // with arithmetic instead of a branch keeps the loop vectorizable.
-            let mine = (cell.0 & BASE == b) as u64;
-            *cell = cell.tick(n * mine);
+            let mine = (w.bits() & BASE == b) as u64;
+            *w = w.tick(n * mine);
         }
     }
 
-    /// Advances the CPU clock to `t_ms`, applying the ticks of every base in `(now, t_ms]`.
-    /// A time before the current one applies no ticks.
-    pub fn advance_to(&mut self, t_ms: u64) {
-        if t_ms <= self.now {
+    /// Advances the area's clock to `now`, applying the ticks of every base in
+    /// `(self.now(), now]`. A time before the current one applies no ticks.
+    pub fn advance_to(&mut self, now: CpuTime) {
+        if now <= self.now {
             return;
         }
         // Only the bases of running timers need their ticks counted (each count is two
         // divisions); one pass collects them.
         let mut present = 0u8;
-        for cell in self.cells.iter() {
-            present |= u8::from(cell.0 & RUNNING != 0) << (cell.0 >> 12 & 3);
+        for w in self.words.iter() {
+            present |= u8::from(w.bits() & RUNNING != 0) << (w.bits() >> 12 & 3);
         }
         for base in TimeBase::ALL {
             if present & 1 << base.bits() != 0 {
-                let n = super::ticks_between(self.now, t_ms, base);
+                let n = super::ticks_between(self.now, now, base);
                 if n > 0 {
                     self.tick(base, n);
                 }
             }
         }
-        self.now = t_ms;
+        self.now = now;
     }
 
-    /// `FR T n` with RLO `fr` (enable), for a timer that the program starts with `kind`.
-    pub fn fr(&mut self, index: usize, kind: S5Kind, fr: bool) -> Result<(), NoSuchTimer> {
-        let c = self.cell(index)?;
-        *c = c.enable(kind, fr);
+    /// `FR T n` with RLO `fr` (enable): a rising RLO clears the start edge memory.
+    pub fn fr(&mut self, index: usize, fr: bool) -> Result<(), NoSuchOperand> {
+        let w = self.word(index)?;
+        *w = w.enable(fr);
         Ok(())
     }
 
@@ -141,46 +173,48 @@ impl<const N: usize> TimerMemory<N> {
         kind: S5Kind,
         s: bool,
         tv: S5Time,
-    ) -> Result<(), NoSuchTimer> {
-        let c = self.cell(index)?;
-        *c = c.start(kind, s, tv);
+    ) -> Result<(), NoSuchOperand> {
+        let w = self.word(index)?;
+        *w = w.start(kind, s, tv);
         Ok(())
     }
 
     /// `R T n` with RLO `r`.
-    pub fn reset(&mut self, index: usize, r: bool) -> Result<(), NoSuchTimer> {
-        let c = self.cell(index)?;
-        *c = c.reset(r);
+    pub fn reset(&mut self, index: usize, r: bool) -> Result<(), NoSuchOperand> {
+        let w = self.word(index)?;
+        *w = w.reset(r);
         Ok(())
     }
 
     /// `L T n`: the remaining value in binary (S5TMR-LOAD-01).
-    pub fn load(&self, index: usize) -> Result<u16, NoSuchTimer> {
-        self.read(index).map(Cell::value)
+    pub fn load(&self, index: usize) -> Result<u16, NoSuchOperand> {
+        self.read(index).map(TimerWord::value)
     }
 
     /// `LC T n`: the remaining value in BCD with the base in bits 13-12 (S5TMR-LOAD-01).
-    pub fn load_bcd(&self, index: usize) -> Result<u16, NoSuchTimer> {
-        self.read(index).map(Cell::bcd)
+    pub fn load_bcd(&self, index: usize) -> Result<u16, NoSuchOperand> {
+        self.read(index).map(TimerWord::bcd)
     }
 
     /// `A T n`: the timer status (`AN T n` is its negation).
-    pub fn status(&self, index: usize) -> Result<bool, NoSuchTimer> {
-        self.read(index).map(Cell::q)
+    pub fn status(&self, index: usize) -> Result<bool, NoSuchOperand> {
+        self.read(index).map(TimerWord::q)
     }
 
-    /// The LAD box at CPU time `t_ms`: the OS ticks up to `t_ms`, then `FR`, the start
-    /// operation and `R`, as the box compiles to STL.
+    /// The LAD box `kind` on timer `index` at CPU time `now`: the OS ticks up to `now`, then
+    /// `FR`, the start operation and `R`, as the box compiles to STL.
     pub fn call(
         &mut self,
         index: usize,
         kind: S5Kind,
-        t_ms: u64,
+        now: CpuTime,
         input: S5Input,
-    ) -> Result<S5Output, NoSuchTimer> {
-        self.advance_to(t_ms);
-        let c = self.cell(index)?;
-        *c = c.execute(kind, input);
-        Ok(c.output())
+    ) -> Result<S5Output, NoSuchOperand> {
+        // Check the operand before the clock moves, so that an error changes nothing.
+        self.read(index)?;
+        self.advance_to(now);
+        let w = self.word(index)?;
+        *w = w.execute(kind, input);
+        Ok(w.output())
     }
 }

@@ -1,10 +1,14 @@
-//! S5 timers of S7-300/400: `S_PULSE`, `S_PEXT`, `S_ODT`, `S_ODTS`, `S_OFFDT` (seed 000 §9.1-9.7,
-//! seed 003 §7).
+//! S5 timers of S7-300/400: `S_PULSE`, `S_PEXT`, `S_ODT`, `S_ODTS`, `S_OFFDT` (LAD manual
+//! §9.1-9.7, Berger §7).
 //!
-//! - [`reference::S5TimerRef`]: one timer as the manual describes it, one function per rule.
-//! - [`cell`]: the optimized timer cell, the whole state packed in the CPU's 16-bit timer word.
-//! - [`memory::TimerMemory`]: a timer memory area of N cells whose time-base tick updates every
-//!   running timer in one pass, with the STL operations (SP/SE/SD/SS/SF, R, FR, L, LC, A/AN).
+//! One interface, [`S5TimerOps`], two implementations:
+//! - [`S5TimerRef`]: one timer as the manual describes it, one function per rule.
+//! - [`S5Timer`]: the optimized timer, its whole state packed in the CPU's 16-bit timer word
+//!   ([`TimerWord`]).
+//!
+//! and [`TimerMemory`], a timer memory area of N words whose time-base tick updates every
+//! running timer in one pass, with the STL operations (`SP`/`SE`/`SD`/`SS`/`SF`, `R`, `FR`,
+//! `L`, `LC`, `A`).
 //!
 //! Time follows the operating-system tick model (S5TMR-TICK-01): the tick of a base falls on
 //! every whole multiple of the base on the CPU millisecond clock, and decrements each running
@@ -12,22 +16,31 @@
 //! has been applied.
 //!
 //! ```
-//! use plc_timers::s5::{reference::S5TimerRef, S5Input, S5Kind};
-//! use plc_timers::time::S5Time;
+//! use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef};
+//! use plc_timers::time::CpuTime;
 //!
-//! let tv: S5Time = "S5T#50MS".parse()?; // 5 units of 10 ms
-//! let mut sd = S5TimerRef::new(S5Kind::SOdt);
-//! assert!(!sd.call(0, S5Input::new(true, false, tv)).q); // rising S starts the on-delay
-//! assert_eq!(sd.call(40, S5Input::new(true, false, tv)).bi, 1); // 4 ticks: 1 unit left
-//! assert!(sd.call(50, S5Input::new(true, false, tv)).q); // 5th tick: expired, S = 1: Q = 1
-//! # Ok::<(), plc_timers::time::LiteralError>(())
+//! let tv = plc_timers::s5time!("S5T#50MS"); // 5 units of 10 ms
+//! let at = CpuTime::from_millis;
+//! let s = S5Input::new(true, false, tv);
+//! let mut reference = S5TimerRef::new();
+//! let mut optimized = S5Timer::new();
+//! for timer in [&mut reference as &mut dyn S5TimerOps, &mut optimized] {
+//!     assert!(!timer.call(S5Kind::SOdt, at(0), s).q); // rising S starts the on-delay
+//!     assert_eq!(timer.call(S5Kind::SOdt, at(40), s).bi, 1); // 4 ticks: 1 unit left
+//!     assert!(timer.call(S5Kind::SOdt, at(50), s).q); // 5th tick: run out, S = 1: Q = 1
+//! }
+//! assert_eq!(reference.state(), optimized.state());
 //! ```
 
-pub mod cell;
 pub mod memory;
 pub mod reference;
+pub mod word;
 
-use crate::time::{S5Time, TimeBase};
+pub use memory::TimerMemory;
+pub use reference::S5TimerRef;
+pub use word::{S5Timer, TimerWord};
+
+use crate::time::{CpuTime, S5Time, TimeBase};
 
 /// The five S5 timer kinds, with both mnemonic sets (watch the clash: English `SE` is the
 /// extended pulse, German `SE` the on-delay).
@@ -93,13 +106,19 @@ impl S5Kind {
 }
 
 /// The inputs of one execution of an S5 timer box.
+///
+/// ```
+/// use plc_timers::s5::S5Input;
+/// let input = S5Input::new(true, false, plc_timers::s5time!("S5T#1S")).with_fr(true);
+/// assert!(input.s && input.fr && !input.r);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct S5Input {
     /// `S`, the start input.
     pub s: bool,
     /// `R`, the reset input.
     pub r: bool,
-    /// `FR`, the enable input (STL `FR T n`; not on the LAD boxes, false there).
+    /// `FR`, the enable input (STL `FR T n`; the LAD boxes have none: false there).
     pub fr: bool,
     /// `TV` (`TW`), the time value loaded on a start.
     pub tv: S5Time,
@@ -115,6 +134,12 @@ impl S5Input {
             tv,
         }
     }
+
+    /// These inputs with `FR` = `fr`.
+    #[must_use]
+    pub const fn with_fr(self, fr: bool) -> S5Input {
+        S5Input { fr, ..self }
+    }
 }
 
 /// The outputs of one execution.
@@ -128,18 +153,34 @@ pub struct S5Output {
     pub bcd: u16,
 }
 
-/// The state of one S5 timer as the reference names it; the packed cell maps to it through
-/// [`cell::abstraction`].
+/// The state of one S5 timer as the reference names it: what both implementations show through
+/// [`S5TimerOps::state`] and accept in their `from_state` constructors.
+///
+/// A plain description: any combination of fields can be written here, and
+/// [`S5State::is_valid`] says whether it is a state a timer can be in. The types that hold a
+/// timer ([`S5TimerRef`], [`S5Timer`], [`TimerWord`]) take a state only through `from_state`,
+/// which checks it, so none of them can hold an invalid one.
+///
+/// ```
+/// use plc_timers::s5::S5State;
+/// assert!(S5State::RESET.is_valid());
+/// assert!(!S5State { value: 1000, ..S5State::RESET }.is_valid());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct S5State {
     /// Whether the time is running (being decremented by the OS).
     pub running: bool,
-    /// The remaining value in units, 0..=999 (binary, seed 000 §9.1 "bits 0-9").
+    /// The remaining value in units, 0..=999 (binary, LAD manual §9.1 "bits 0-9").
     pub value: u16,
     /// The time base of the running or last value.
     pub base: TimeBase,
     /// The timer status `Q` (what `A T n` scans).
     pub q: bool,
+    /// The status the timer takes when its running time runs out (Berger §7: the CPU changes
+    /// the status "to 0 or 1, depending on the timer type"): 1 after an on-delay start (SD, SS),
+    /// 0 after a pulse or off-delay start (SP, SE, SF). Meaningful only while running; 0 when
+    /// stopped.
+    pub q_on_expiry: bool,
     /// `S` at the previous execution: the edge memory for starts.
     pub s_prev: bool,
     /// `FR` at the previous execution: the edge memory of the enable.
@@ -153,14 +194,15 @@ impl S5State {
         value: 0,
         base: TimeBase::Ms10,
         q: false,
+        q_on_expiry: false,
         s_prev: false,
         fr_prev: false,
     };
 
     /// The invariant of every reachable state: the value fits its 10 bits and three BCD
-    /// digits (0..=999).
+    /// digits (0..=999), and a stopped timer has no pending expiry status.
     pub const fn is_valid(&self) -> bool {
-        self.value <= 999
+        self.value <= 999 && (self.running || !self.q_on_expiry)
     }
 
     /// The outputs this state shows.
@@ -173,9 +215,29 @@ impl S5State {
     }
 }
 
+/// What both S5 timer implementations offer: the box call and the state it leaves.
+///
+/// `call` executes the box `kind` at CPU time `now` (not before the previous call): the OS
+/// ticks of the timer's base since its previous call are applied first (S5TMR-TICK-01), then
+/// `FR`, the start logic of the kind and `R`, as the box compiles to STL.
+pub trait S5TimerOps {
+    /// One execution of the box `kind` at `now`.
+    fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output;
+    /// The state, as the reference names it.
+    fn state(&self) -> S5State;
+}
+
 /// The number of ticks of `base` in the interval `(from, to]` of the CPU millisecond clock:
-/// ticks fall on whole multiples of the base (S5TMR-TICK-01).
-pub const fn ticks_between(from: u64, to: u64, base: TimeBase) -> u64 {
+/// ticks fall on whole multiples of the base (S5TMR-TICK-01); none when `to` is not after `from`.
+///
+/// ```
+/// use plc_timers::s5::ticks_between;
+/// use plc_timers::time::{CpuTime, TimeBase};
+/// let at = CpuTime::from_millis;
+/// assert_eq!(ticks_between(at(5), at(35), TimeBase::Ms10), 3); // ticks at 10, 20, 30
+/// assert_eq!(ticks_between(at(10), at(19), TimeBase::Ms10), 0);
+/// ```
+pub const fn ticks_between(from: CpuTime, to: CpuTime, base: TimeBase) -> u64 {
     let b = base.millis() as u64;
-    (to / b).saturating_sub(from / b)
+    (to.as_millis() / b).saturating_sub(from.as_millis() / b)
 }

@@ -1,46 +1,89 @@
 //! The reference semantics of the S5 timers, one function per rule.
 //!
-//! Sources: seed 000 §9.1 (timer word, OS update), §9.3-9.7 (the five kinds), seed 003 §7 (OS
-//! update asynchronous to the scan, value 0, `R T n`). Rule IDs refer to
-//! `spec/requirements/s5.toml`; `spec/s5.md` gives the reasons for the modelling decisions.
+//! Sources: LAD manual §9.1 (timer word, OS update), §9.3-9.7 (the five kinds); STL manual
+//! (`FR`, `R T n`); Berger §7 (OS update asynchronous to the scan, value 0, `R T n`). Rule IDs
+//! refer to `spec/requirements/s5.toml`; `spec/s5.md` gives the reasons for the modelling
+//! decisions.
 
-use super::{ticks_between, S5Input, S5Kind, S5Output, S5State};
-use crate::time::TimeBase;
+use super::{ticks_between, S5Input, S5Kind, S5Output, S5State, S5TimerOps};
+use crate::time::CpuTime;
 
-/// One S5 timer of kind `kind`, executed as the LAD box (or its STL sequence
-/// `FR`, `SP/SE/SD/SS/SF`, `R`) at successive CPU times.
+/// One S5 timer, executed as the LAD box (or its STL sequence `FR`, `SP/SE/SD/SS/SF`, `R`) at
+/// successive CPU times.
+///
+/// ```
+/// use plc_timers::s5::{S5Input, S5Kind, S5TimerOps, S5TimerRef};
+/// use plc_timers::time::CpuTime;
+///
+/// let tv = plc_timers::s5time!("S5T#30MS");
+/// let mut sp = S5TimerRef::new();
+/// let at = CpuTime::from_millis;
+/// assert!(sp.call(S5Kind::SPulse, at(0), S5Input::new(true, false, tv)).q); // pulse starts
+/// assert!(!sp.call(S5Kind::SPulse, at(30), S5Input::new(true, false, tv)).q); // 3 ticks: over
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct S5TimerRef {
-    /// The box kind.
-    pub kind: S5Kind,
-    /// The timer's state.
-    pub state: S5State,
-    /// The CPU time (ms) of the previous execution: ticks after it and up to the next execution
-    /// are applied before that execution.
-    pub t_prev: u64,
+    state: S5State,
+    /// The CPU time of the previous execution: ticks after it and up to the next execution are
+    /// applied before that execution.
+    last_call: CpuTime,
 }
 
-/// The status Q while the time runs: 1 for the pulses and the off-delay (seed 000 §9.3, §9.4:
-/// "while the timer runs, a scan of Q for 1 gives 1"; §9.7: "Q = 1 if S = 1 or the timer runs");
-/// 0 for the on-delays, which switch on when the time has run out (§9.5, §9.6).
-pub const fn q_while_running(kind: S5Kind) -> bool {
-    matches!(kind, S5Kind::SPulse | S5Kind::SPext | S5Kind::SOffdt)
+impl Default for S5TimerRef {
+    fn default() -> Self {
+        S5TimerRef::new()
+    }
+}
+
+/// Whether `kind` is an on-delay (S_ODT, S_ODTS): its status switches to 1 when the time runs
+/// out (LAD manual §9.5, §9.6); the pulses and the off-delay have Q = 1 while the time runs and
+/// switch to 0 when it runs out (§9.3, §9.4: "while the timer runs, a scan of Q for 1 gives 1";
+/// §9.7: Q = 1 while the timer runs).
+///
+/// ```
+/// use plc_timers::s5::{reference::is_on_delay, S5Kind};
+/// assert!(is_on_delay(S5Kind::SOdts) && !is_on_delay(S5Kind::SOffdt));
+/// ```
+pub const fn is_on_delay(kind: S5Kind) -> bool {
+    matches!(kind, S5Kind::SOdt | S5Kind::SOdts)
 }
 
 impl S5TimerRef {
-    /// A cleared timer at CPU time 0.
-    pub const fn new(kind: S5Kind) -> S5TimerRef {
+    /// A cleared timer whose previous execution was at CPU time 0.
+    pub const fn new() -> S5TimerRef {
         S5TimerRef {
-            kind,
             state: S5State::RESET,
-            t_prev: 0,
+            last_call: CpuTime::ZERO,
         }
     }
 
+    /// A timer in `state` whose previous execution was at `last_call`, or `None` when the state
+    /// is not valid ([`S5State::is_valid`]).
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5State, S5TimerRef};
+    /// use plc_timers::time::CpuTime;
+    /// assert!(S5TimerRef::from_state(S5State::RESET, CpuTime::ZERO).is_some());
+    /// let invalid = S5State { value: 1000, ..S5State::RESET };
+    /// assert!(S5TimerRef::from_state(invalid, CpuTime::ZERO).is_none());
+    /// ```
+    pub const fn from_state(state: S5State, last_call: CpuTime) -> Option<S5TimerRef> {
+        if state.is_valid() {
+            Some(S5TimerRef { state, last_call })
+        } else {
+            None
+        }
+    }
+
+    /// The CPU time of the previous execution.
+    pub const fn last_call(&self) -> CpuTime {
+        self.last_call
+    }
+
     /// S5TMR-TICK-01 / S5TMR-EXPIRE-01: the operating system decrements the value of a running
-    /// timer by one unit per tick of its base until it is 0 (seed 000 §9.1); when it reaches 0 the
-    /// time has run out and the status changes (seed 003 §7). Of `ticks` ticks, at most `value`
-    /// take effect.
+    /// timer by one unit per tick of its base until it is 0 (LAD manual §9.1); when it reaches 0
+    /// the time has run out and the status changes (Berger §7). Of `ticks` ticks, at most
+    /// `value` take effect.
     pub fn tick(&mut self, ticks: u64) {
         let s = &mut self.state;
         if !s.running || ticks == 0 || s.value == 0 {
@@ -55,14 +98,15 @@ impl S5TimerRef {
         }
     }
 
-    /// The time has run out: the timer stops and its status switches (pulses and off-delay to 0,
-    /// on-delays to 1). A running timer's Q is [`q_while_running`], so expiry inverts it.
+    /// The time has run out: the timer stops and its status switches to the one its start
+    /// chose (pulses and off-delay to 0, on-delays to 1; Berger §7).
     fn expire(s: &mut S5State) {
         s.running = false;
-        s.q = !s.q;
+        s.q = s.q_on_expiry;
+        s.q_on_expiry = false;
     }
 
-    /// S5TMR-ZERO-01 (seed 003 §7): a timer started with the value 0 stays active until the CPU,
+    /// S5TMR-ZERO-01 (Berger §7): a timer started with the value 0 stays active until the CPU,
     /// processing the timer, finds the time run out: at its next execution.
     fn process_zero_value(&mut self) {
         if self.state.running && self.state.value == 0 {
@@ -70,110 +114,135 @@ impl S5TimerRef {
         }
     }
 
-    /// S5TMR-FR-01 (STL `FR T n`, modelling decision): a rising edge at FR re-enables the timer:
-    /// it clears the start edge memory so that the current S level counts as a start edge.
+    /// S5TMR-FR-01 (STL manual, `FR`): a rising edge at FR clears the edge memory of the start
+    /// input, and nothing else. A start operation executed with RLO = 1 then sees a rising edge
+    /// and restarts the timer; with RLO = 0 nothing starts (an off-delay needs a falling edge,
+    /// which a cleared memory cannot give).
     fn enable(&mut self, fr: bool) {
         if fr && !self.state.fr_prev {
-            self.state.s_prev = self.kind.starts_on_falling_edge();
+            self.state.s_prev = false;
         }
         self.state.fr_prev = fr;
     }
 
-    /// Loads TV and starts the time (seed 000 §9.1: "when the timer starts, the contents of
-    /// the timer cell are used as the time value").
-    fn start(&mut self, input: &S5Input) {
+    /// Loads TV and starts the time (LAD manual §9.1: "when the timer starts, the contents of
+    /// the timer cell are used as the time value"). The status while the time runs: 1 for the
+    /// pulses and the off-delay; 0 for S_ODT (it switches on when the time has run out); for
+    /// S_ODTS unchanged, since its status stays 1 from the first expiry until R (SS-Q-01).
+    fn start(&mut self, kind: S5Kind, input: &S5Input) {
         let s = &mut self.state;
         s.running = true;
         s.value = input.tv.units();
         s.base = input.tv.base();
-        s.q = q_while_running(self.kind);
+        s.q_on_expiry = is_on_delay(kind);
+        s.q = match kind {
+            S5Kind::SOdt => false,
+            S5Kind::SOdts => s.q,
+            S5Kind::SPulse | S5Kind::SPext | S5Kind::SOffdt => true,
+        };
     }
 
-    /// Stops the time without clearing the value (SP-STOP-01, SD-STOP-01: S falling stops the
-    /// timer and Q = 0; the remaining value stays readable, a decision).
+    /// Stops the time without clearing the value (S5TMR-STOP-01: S falling stops S_PULSE and
+    /// S_ODT and Q = 0; the remaining value stays readable).
     fn stop(&mut self) {
-        self.state.running = false;
-        self.state.q = false;
+        let s = &mut self.state;
+        s.running = false;
+        s.q = false;
+        s.q_on_expiry = false;
     }
 
-    /// The start logic of the kind (seed 000 §9.3-9.7). Every start needs a signal change at S
-    /// (S5TMR-EDGE-01): rising, or falling for S_OFFDT.
-    fn start_logic(&mut self, input: &S5Input) {
+    /// The start logic of the kind (LAD manual §9.3-9.7). Every start needs a signal change at S
+    /// (S5TMR-EDGE-01): rising, or falling for S_OFFDT; an FR edge makes a held S count as rising.
+    fn start_logic(&mut self, kind: S5Kind, input: &S5Input) {
         let rising = input.s && !self.state.s_prev;
         let falling = !input.s && self.state.s_prev;
-        match self.kind {
-            // §9.3: starts on a rising S, runs while S = 1; S falling before the end stops it.
+        match kind {
+            // §9.3 (SP-Q-01): starts on a rising S, runs while S = 1; S falling before the end
+            // stops it. S cannot rise while the pulse runs, except after an FR edge, which
+            // restarts it like every other kind.
             S5Kind::SPulse => {
-                if rising && !self.state.running {
-                    self.start(input);
+                if rising {
+                    self.start(kind, input);
                 } else if !input.s && self.state.running {
                     self.stop();
                 }
             }
-            // §9.4: starts on a rising S, runs on when S falls; a rising S while running
-            // restarts it with TV.
+            // §9.4 (SE-RUN-ON-01): starts on a rising S, runs on when S falls; a rising S while
+            // running restarts it with TV.
             S5Kind::SPext => {
                 if rising {
-                    self.start(input);
+                    self.start(kind, input);
                 }
             }
-            // §9.5: starts on a rising S, runs while S = 1; Q = 1 when the time has run out and
-            // S is still 1; S falling stops it, and Q = 0.
+            // §9.5 (SD-Q-01): starts on a rising S, runs while S = 1; Q = 1 when the time has run
+            // out and S is still 1; S falling stops it, and Q = 0.
             S5Kind::SOdt => {
                 if rising {
-                    self.start(input);
+                    self.start(kind, input);
                 } else if !input.s {
                     self.stop();
                 }
             }
-            // §9.6: starts on a rising S, runs on when S falls; Q = 1 after the time whatever S
-            // does; a rising S (while running or after the end) restarts it (SS-RESTART-01).
+            // §9.6 (SS-Q-01): starts on a rising S, runs on when S falls; Q = 1 after the time
+            // whatever S does, until R; a rising S (while running or after the end) restarts the
+            // time, and a Q of 1 stays.
             S5Kind::SOdts => {
                 if rising {
-                    self.start(input);
+                    self.start(kind, input);
                 }
             }
-            // §9.7: starts on a falling S; Q = 1 while S = 1 or the timer runs; a rising S while
-            // running stops it (it restarts only on the next falling S).
+            // §9.7 (SF-Q-01): starts on a falling S; a rising S sets Q = 1 and stops a running
+            // time (it restarts only on the next falling S). Q is the timer's status bit, set
+            // by these edges, cleared by expiry and R: after R with S held, Q stays 0 until S
+            // changes again.
             S5Kind::SOffdt => {
                 if falling {
-                    self.start(input);
-                } else if input.s {
-                    self.state.running = false;
-                    self.state.q = true;
+                    self.start(kind, input);
+                } else if rising {
+                    let s = &mut self.state;
+                    s.running = false;
+                    s.q = true;
+                    s.q_on_expiry = false;
                 }
             }
         }
         self.state.s_prev = input.s;
     }
 
-    /// S5TMR-R-01 (seed 003 §7.1.3, seed 000 §9.3-9.7): while R = 1 the timer is reset: stopped,
+    /// S5TMR-R-01 (Berger §7.1.3; LAD manual §9.3-9.7): while R = 1 the timer is reset: stopped,
     /// value and base cleared, Q = 0. Applied after the start logic of the same execution, so a
     /// scan for 1 gives 0 as long as R = 1.
     fn reset(&mut self, r: bool) {
         if r {
-            let s = &mut self.state;
-            s.running = false;
-            s.value = 0;
-            s.base = TimeBase::Ms10;
-            s.q = false;
+            self.state = S5State {
+                s_prev: self.state.s_prev,
+                fr_prev: self.state.fr_prev,
+                ..S5State::RESET
+            };
         }
     }
 
-    /// One execution of the box with the OS ticks since the previous execution already applied.
-    pub fn execute(&mut self, input: S5Input) -> S5Output {
+    /// One execution of the box `kind` with the OS ticks since the previous execution already
+    /// applied ([`S5TimerRef::tick`]): the value-0 check, `FR`, the start logic, `R`.
+    pub fn execute(&mut self, kind: S5Kind, input: S5Input) -> S5Output {
         self.process_zero_value();
         self.enable(input.fr);
-        self.start_logic(&input);
+        self.start_logic(kind, &input);
         self.reset(input.r);
         self.state.output()
     }
+}
 
-    /// One execution at CPU time `t_ms` (not before the previous one): the ticks of the timer's
-    /// base in `(t_prev, t_ms]` are applied first.
-    pub fn call(&mut self, t_ms: u64, input: S5Input) -> S5Output {
-        self.tick(ticks_between(self.t_prev, t_ms, self.state.base));
-        self.t_prev = t_ms;
-        self.execute(input)
+impl S5TimerOps for S5TimerRef {
+    /// One execution at CPU time `now` (not before the previous one): the ticks of the timer's
+    /// base in `(last_call, now]` are applied first.
+    fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
+        self.tick(ticks_between(self.last_call, now, self.state.base));
+        self.last_call = now;
+        self.execute(kind, input)
+    }
+
+    fn state(&self) -> S5State {
+        self.state
     }
 }

@@ -1,17 +1,72 @@
-//! The free-running CPU millisecond clock of S7-1200/1500, which wraps (seed 001, "Timer
-//! operation": the start value is subtracted from the current value of the internal CPU timer).
+//! The CPU clock: [`CpuTime`], the time every timer call takes, and [`ClockWord`], the wrapping
+//! clock word of the IEC timers.
 //!
-//! The arithmetic is generic over the clock's width so that the same code runs on the real
-//! 32-bit clock and on 8-bit and 16-bit clocks, which the exhaustive proof drivers enumerate
+//! The IEC timers of S7-1200/1500 copy a free-running internal CPU millisecond timer into START
+//! and subtract START from it on every update (S7-1200 manual, "Timer operation"); that timer
+//! wraps. Their arithmetic is generic over the clock word's width so that the same code runs on
+//! the real 32-bit clock and on 4- and 8-bit clocks, which the exhaustive proof drivers enumerate
 //! completely (the small-scope argument: every wrap case of the 32-bit clock has the same shape
 //! at 8 bits, and the code is the same generic code).
 
 use core::fmt::Debug;
 
+/// A reading of the CPU's millisecond clock: milliseconds since the CPU started, as one 64-bit
+/// count that does not wrap in practice (585 million years).
+///
+/// Every timer API takes the time it runs at as a `CpuTime`, so no block reads a clock and every
+/// behaviour is replayable. The S5 timers count the ticks of their time base on it (whole
+/// multiples of the base); the IEC timers see its low 32 bits, the wrapping S7-1200 clock
+/// ([`CpuTime::clock`]).
+///
+/// ```
+/// use plc_timers::time::CpuTime;
+/// let t = CpuTime::from_millis((1 << 32) + 5);
+/// assert_eq!(t.clock::<u32>(), 5); // the 32-bit CPU clock has wrapped once
+/// assert!(CpuTime::from_millis(10) < t);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
+#[repr(transparent)]
+pub struct CpuTime(u64);
+
+impl CpuTime {
+    /// The CPU's start: 0 ms.
+    pub const ZERO: CpuTime = CpuTime(0);
+
+    /// The time `millis` milliseconds after the CPU's start.
+    pub const fn from_millis(millis: u64) -> CpuTime {
+        CpuTime(millis)
+    }
+
+    /// Milliseconds since the CPU's start.
+    pub const fn as_millis(self) -> u64 {
+        self.0
+    }
+
+    /// `millis` later, saturating at the largest time.
+    #[must_use]
+    pub const fn add_millis(self, millis: u64) -> CpuTime {
+        CpuTime(self.0.saturating_add(millis))
+    }
+
+    /// This time as a clock word of type `C` shows it: its low `C::BITS` bits.
+    pub fn clock<C: ClockWord>(self) -> C {
+        C::from_u64_wrapping(self.0)
+    }
+}
+
+impl From<u64> for CpuTime {
+    fn from(millis: u64) -> CpuTime {
+        CpuTime(millis)
+    }
+}
+
 /// An unsigned clock word that counts milliseconds and wraps at `2^BITS`.
 pub trait ClockWord: Copy + Eq + Ord + Debug + Default {
     /// The width in bits.
     const BITS: u32;
+    /// Zero.
+    const ZERO: Self;
     /// The largest value before the wrap.
     const MAX: Self;
 
@@ -33,6 +88,7 @@ macro_rules! clock_word {
     ($t:ty) => {
         impl ClockWord for $t {
             const BITS: u32 = <$t>::BITS;
+            const ZERO: Self = 0;
             const MAX: Self = <$t>::MAX;
 
             #[inline]

@@ -1,7 +1,7 @@
 //! IEC `TIME`: a signed 32-bit count of milliseconds (seed 001, Table 8-21).
 
-use super::literal::{parse_components, strip_prefix_ci, write_components};
-use super::literal::{LiteralError, LiteralErrorKind};
+use super::literal::{char_at, has_prefix_ci, parse_components, write_components};
+use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 use super::S5Time;
 
 /// IEC `TIME`: signed 32-bit milliseconds, `T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms`.
@@ -98,52 +98,98 @@ impl From<S5Time> for Time {
     }
 }
 
-impl core::str::FromStr for Time {
-    type Err = LiteralError;
-
+impl Time {
     /// Parses `T#…` or `TIME#…` (case-insensitive, underscores optional, an optional `-` after
     /// `#`, units D, H, M, S, MS from largest to smallest, each at most once; the first may exceed
-    /// its usual range, as in `T#90M`), or a plain whole number of milliseconds (seed 001: "T#200ms
-    /// or 200"). The range is checked exactly.
+    /// its usual range, as in `T#90M`), or a plain whole number of milliseconds with an optional
+    /// sign (seed 001: "T#200ms or 200"). The range is checked exactly. A `const fn`, so that
+    /// [`crate::time!`] checks a literal at compile time; [`str::parse`] calls it too.
     ///
     /// ```
     /// use plc_timers::time::Time;
-    /// assert_eq!("T#2s_200ms".parse::<Time>()?.as_millis(), 2200);
-    /// assert_eq!("200".parse::<Time>()?.as_millis(), 200);
-    /// assert_eq!("T#-24D_20H_31M_23S_648MS".parse::<Time>()?, Time::MIN);
-    /// assert!("T#24D_20H_31M_23S_648MS".parse::<Time>().is_err());
+    /// assert_eq!(Time::parse("T#2s_200ms")?.as_millis(), 2200);
+    /// assert_eq!(Time::parse("200")?.as_millis(), 200);
+    /// assert_eq!(Time::parse("T#-24D_20H_31M_23S_648MS")?, Time::MIN);
+    /// assert!(Time::parse("T#24D_20H_31M_23S_648MS").is_err());
     /// # Ok::<(), plc_timers::time::LiteralError>(())
     /// ```
-    fn from_str(text: &str) -> Result<Time, LiteralError> {
-        const WHAT: &str = "TIME";
-        let err = |position, kind| LiteralError {
-            what: WHAT,
-            position,
-            kind,
-        };
-        if text.is_empty() {
-            return Err(err(0, LiteralErrorKind::Empty));
+    pub const fn parse(text: &str) -> Result<Time, LiteralError> {
+        let b = text.as_bytes();
+        if b.is_empty() {
+            return fail(0, LiteralErrorKind::Empty);
         }
+        let prefix = if has_prefix_ci(b, 0, "TIME#") {
+            5
+        } else if has_prefix_ci(b, 0, "T#") {
+            2
+        } else {
+            0
+        };
         // `value_start`: where the value (with its sign) begins, which a range error points at.
-        let (value_start, negative, magnitude) =
-            match strip_prefix_ci(text, "TIME#").or_else(|| strip_prefix_ci(text, "T#")) {
-                Some(body) => {
-                    let (negative, rest) = match body.strip_prefix('-') {
-                        Some(rest) => (true, rest),
-                        None => (false, body),
-                    };
-                    let components = parse_components(WHAT, rest, text.len() - rest.len(), true)?;
-                    (text.len() - body.len(), negative, components)
-                }
-                None => {
-                    let (negative, magnitude) = parse_plain_millis(text)?;
-                    (0, negative, magnitude)
-                }
-            };
+        let value_start = prefix;
+        let negative = value_start < b.len() && b[value_start] == b'-';
+        let magnitude = if prefix > 0 {
+            let digits = value_start + negative as usize;
+            match parse_components(LiteralType::Time, b, digits, true) {
+                Ok(m) => m,
+                Err(e) => return Err(e),
+            }
+        } else {
+            match parse_plain_millis(b) {
+                Ok(m) => m,
+                Err(e) => return Err(e),
+            }
+        };
         // Any magnitude above 2^31 is out of range; capping keeps the sign change exact.
-        let capped = magnitude.min(1 << 40) as i64;
+        let capped = if magnitude > 1 << 40 { 1 << 40 } else { magnitude } as i64;
         let signed = if negative { -capped } else { capped };
-        Time::from_millis_i64(signed).ok_or(err(value_start, LiteralErrorKind::OutOfRange))
+        match Time::from_millis_i64(signed) {
+            Some(t) => Ok(t),
+            None => fail(value_start, LiteralErrorKind::OutOfRange),
+        }
+    }
+}
+
+const fn fail<T>(position: usize, kind: LiteralErrorKind) -> Result<T, LiteralError> {
+    Err(LiteralError::new(LiteralType::Time, position, kind))
+}
+
+/// The magnitude of a plain whole number of milliseconds with an optional sign (`-5`, `+5`, `5`).
+const fn parse_plain_millis(b: &[u8]) -> Result<u64, LiteralError> {
+    let offset = if b[0] == b'-' || b[0] == b'+' { 1 } else { 0 };
+    if offset == b.len() {
+        return fail(offset, LiteralErrorKind::MissingDigits);
+    }
+    let mut value: u64 = 0;
+    let mut i = offset;
+    while i < b.len() {
+        if !b[i].is_ascii_digit() {
+            // A letter first means a missing or unknown prefix (`X#5S`, `5S` without `T#`).
+            let kind = if b[i].is_ascii_alphabetic() && i == offset {
+                LiteralErrorKind::Prefix
+            } else {
+                LiteralErrorKind::UnexpectedChar(char_at(b, i))
+            };
+            return fail(i, kind);
+        }
+        value = match value.checked_mul(10) {
+            Some(v) => match v.checked_add((b[i] - b'0') as u64) {
+                Some(v) => v,
+                None => return fail(offset, LiteralErrorKind::Overflow),
+            },
+            None => return fail(offset, LiteralErrorKind::Overflow),
+        };
+        i += 1;
+    }
+    Ok(value)
+}
+
+impl core::str::FromStr for Time {
+    type Err = LiteralError;
+
+    /// [`Time::parse`].
+    fn from_str(text: &str) -> Result<Time, LiteralError> {
+        Time::parse(text)
     }
 }
 
@@ -154,38 +200,4 @@ impl core::fmt::Display for Time {
         f.write_str(if self.0 < 0 { "T#-" } else { "T#" })?;
         write_components(f, u64::from(self.0.unsigned_abs()), true, "_")
     }
-}
-
-/// A plain whole number of milliseconds with an optional sign: (negative, magnitude).
-fn parse_plain_millis(text: &str) -> Result<(bool, u64), LiteralError> {
-    let err = |position, kind| LiteralError {
-        what: "TIME",
-        position,
-        kind,
-    };
-    let (negative, digits) = match text.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, text.strip_prefix('+').unwrap_or(text)),
-    };
-    let offset = text.len() - digits.len();
-    if digits.is_empty() {
-        return Err(err(offset, LiteralErrorKind::MissingDigits));
-    }
-    let mut value: u64 = 0;
-    for (i, c) in digits.char_indices() {
-        let Some(d) = c.to_digit(10) else {
-            // A letter first means a missing or unknown prefix (`X#5S`, `5S` without `T#`).
-            let kind = if c.is_ascii_alphabetic() && i == 0 {
-                LiteralErrorKind::Prefix
-            } else {
-                LiteralErrorKind::UnexpectedChar(c)
-            };
-            return Err(err(offset + i, kind));
-        };
-        value = value
-            .checked_mul(10)
-            .and_then(|v| v.checked_add(u64::from(d)))
-            .ok_or(err(offset, LiteralErrorKind::Overflow))?;
-    }
-    Ok((negative, value))
 }

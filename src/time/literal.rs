@@ -1,5 +1,10 @@
 //! The lexer shared by the duration literals `S5T#…` and `T#…`: a sequence of
 //! `<digits><unit>` components, optionally separated by `_`, units case-insensitive.
+//!
+//! Everything here is a `const fn`, so that a literal can be checked at compile time
+//! ([`crate::s5time!`], [`crate::time!`]). That rules out iterators, closures and `?`; the
+//! loops below walk byte indices of the whole literal, so every error position is a byte offset
+//! of the text the user wrote.
 
 use core::fmt;
 
@@ -20,6 +25,11 @@ pub enum Unit {
 
 impl Unit {
     /// The unit's length in milliseconds.
+    ///
+    /// ```
+    /// use plc_timers::time::Unit;
+    /// assert_eq!(Unit::Minute.millis(), 60_000);
+    /// ```
     pub const fn millis(self) -> u64 {
         match self {
             Unit::Day => 86_400_000,
@@ -41,13 +51,33 @@ impl Unit {
         }
     }
 
-    const fn symbol(self) -> &'static str {
+    /// The unit as literals write it (`D`, `H`, `M`, `S`, `MS`).
+    pub const fn symbol(self) -> &'static str {
         match self {
             Unit::Day => "D",
             Unit::Hour => "H",
             Unit::Minute => "M",
             Unit::Second => "S",
             Unit::Milli => "MS",
+        }
+    }
+}
+
+/// Which literal type was being parsed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LiteralType {
+    /// `S5TIME`: `S5T#…`, `S5TIME#…`, `W#16#…`.
+    S5Time,
+    /// `TIME`: `T#…`, `TIME#…`, whole milliseconds.
+    Time,
+}
+
+impl LiteralType {
+    /// The type's name as the manuals write it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            LiteralType::S5Time => "S5TIME",
+            LiteralType::Time => "TIME",
         }
     }
 }
@@ -82,6 +112,8 @@ pub enum LiteralErrorKind {
     HexDigits,
     /// A BCD digit above 9 in a `W#16#` S5TIME word (the digit's value).
     BcdDigit(u8),
+    /// A sign where the type has none: an S5TIME is never negative.
+    Negative,
     /// The value is outside the type's range (the message names the range).
     OutOfRange,
 }
@@ -89,23 +121,30 @@ pub enum LiteralErrorKind {
 /// An error in a literal: what was wrong and where (byte offset in the given text).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LiteralError {
-    /// Which literal type was being parsed (`S5TIME`, `TIME`).
-    pub what: &'static str,
+    /// Which literal type was being parsed.
+    pub what: LiteralType,
     /// The byte offset in the text where the problem was found.
     pub position: usize,
     /// What was wrong.
     pub kind: LiteralErrorKind,
 }
 
+impl LiteralError {
+    pub(crate) const fn new(what: LiteralType, position: usize, kind: LiteralErrorKind) -> Self {
+        LiteralError {
+            what,
+            position,
+            kind,
+        }
+    }
+}
+
 impl fmt::Display for LiteralError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (what, at) = (self.what, self.position);
-        let units = if what == "S5TIME" {
-            "H, M, S, MS"
-        } else {
-            "D, H, M, S, MS"
-        };
-        let forms = if what == "S5TIME" {
+        let (what, at) = (self.what.name(), self.position);
+        let s5 = matches!(self.what, LiteralType::S5Time);
+        let units = if s5 { "H, M, S, MS" } else { "D, H, M, S, MS" };
+        let forms = if s5 {
             "S5T#aH_bbM_ccS_dddMS, S5TIME#… or W#16#wxyz"
         } else {
             "T#…, TIME#… (e.g. T#2S_200MS, T#-5S) or whole milliseconds"
@@ -144,8 +183,12 @@ impl fmt::Display for LiteralError {
                 f,
                 "BCD digit {d:X} is above 9; the value field W#16#?xyz holds three decimal digits"
             ),
+            LiteralErrorKind::Negative => write!(
+                f,
+                "an S5TIME cannot be negative; it is 0 to 9 990 s (S5T#0MS to S5T#2H46M30S)"
+            ),
             LiteralErrorKind::OutOfRange => {
-                if what == "S5TIME" {
+                if s5 {
                     write!(f, "above the S5TIME maximum of 9 990 s (S5T#2H46M30S)")
                 } else {
                     write!(
@@ -162,105 +205,149 @@ impl fmt::Display for LiteralError {
 #[cfg(feature = "std")]
 impl std::error::Error for LiteralError {}
 
-/// Strips an ASCII prefix case-insensitively.
-pub(crate) fn strip_prefix_ci<'a>(text: &'a str, prefix: &str) -> Option<&'a str> {
-    let n = prefix.len();
-    if text.len() >= n && text.is_char_boundary(n) && text[..n].eq_ignore_ascii_case(prefix) {
-        Some(&text[n..])
+/// Whether `text[at..]` starts with the ASCII `prefix`, ignoring case.
+pub(crate) const fn has_prefix_ci(text: &[u8], at: usize, prefix: &str) -> bool {
+    let p = prefix.as_bytes();
+    if text.len() < at + p.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < p.len() {
+        if !text[at + i].eq_ignore_ascii_case(&p[i]) {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// The character that starts at byte `i` of `text` (which is UTF-8: it came from a `str`).
+pub(crate) const fn char_at(text: &[u8], i: usize) -> char {
+    let b0 = text[i];
+    let (len, mut c) = if b0 < 0x80 {
+        (1, b0 as u32)
+    } else if b0 >= 0xF0 {
+        (4, (b0 & 0x07) as u32)
+    } else if b0 >= 0xE0 {
+        (3, (b0 & 0x0F) as u32)
     } else {
-        None
+        (2, (b0 & 0x1F) as u32)
+    };
+    let mut k = 1;
+    while k < len && i + k < text.len() {
+        c = c << 6 | (text[i + k] & 0x3F) as u32;
+        k += 1;
+    }
+    match char::from_u32(c) {
+        Some(ch) => ch,
+        None => char::REPLACEMENT_CHARACTER,
     }
 }
 
-/// Parses the components `body` (which starts at byte `offset` of the whole text) into a total
-/// number of milliseconds. `days` says whether `D` is a unit here.
-pub(crate) fn parse_components(
-    what: &'static str,
-    body: &str,
-    offset: usize,
+/// The unit spelled by the ASCII letters `text[from..to]`, if any (`D` only when `days`).
+const fn unit_of(text: &[u8], from: usize, to: usize, days: bool) -> Option<Unit> {
+    let first = text[from].to_ascii_uppercase();
+    match to - from {
+        1 => match first {
+            b'D' if days => Some(Unit::Day),
+            b'H' => Some(Unit::Hour),
+            b'M' => Some(Unit::Minute),
+            b'S' => Some(Unit::Second),
+            _ => None,
+        },
+        2 if first == b'M' && text[from + 1].to_ascii_uppercase() == b'S' => Some(Unit::Milli),
+        _ => None,
+    }
+}
+
+const fn fail(what: LiteralType, position: usize, kind: LiteralErrorKind) -> Result<u64, LiteralError> {
+    Err(LiteralError::new(what, position, kind))
+}
+
+/// Parses the components of `text` from byte `start` to the end into a total number of
+/// milliseconds. `days` says whether `D` is a unit here. Positions in errors are byte offsets
+/// of `text`.
+pub(crate) const fn parse_components(
+    what: LiteralType,
+    text: &[u8],
+    start: usize,
     days: bool,
 ) -> Result<u64, LiteralError> {
-    let err = |position: usize, kind| LiteralError {
-        what,
-        position,
-        kind,
-    };
-    let bytes = body.as_bytes();
-    if bytes.is_empty() {
-        return Err(err(offset, LiteralErrorKind::NoComponents));
+    let len = text.len();
+    if start >= len {
+        return fail(what, start, LiteralErrorKind::NoComponents);
     }
-    let mut i = 0;
+    let mut i = start;
     let mut total: u64 = 0;
+    // The previous component's unit: each one must be smaller than the one before.
     let mut last: Option<Unit> = None;
-    while i < bytes.len() {
-        if bytes[i] == b'_' && i > 0 && i + 1 < bytes.len() && bytes[i - 1] != b'_' {
+    while i < len {
+        // One `_` between components (not first, not last, not doubled) is a separator.
+        if text[i] == b'_' && i > start && i + 1 < len && text[i - 1] != b'_' {
             i += 1;
             continue;
         }
-        let start = i;
+        let number = i;
         let mut value: u64 = 0;
-        while i < bytes.len() && bytes[i].is_ascii_digit() {
-            value = value
-                .checked_mul(10)
-                .and_then(|v| v.checked_add(u64::from(bytes[i] - b'0')))
-                .ok_or(err(offset + start, LiteralErrorKind::Overflow))?;
+        while i < len && text[i].is_ascii_digit() {
+            value = match value.checked_mul(10) {
+                Some(v) => match v.checked_add((text[i] - b'0') as u64) {
+                    Some(v) => v,
+                    None => return fail(what, number, LiteralErrorKind::Overflow),
+                },
+                None => return fail(what, number, LiteralErrorKind::Overflow),
+            };
             i += 1;
         }
-        if i == start {
-            let kind = match body[i..].chars().next() {
-                Some(c) if c.is_ascii_alphabetic() => LiteralErrorKind::MissingDigits,
-                Some(c) => LiteralErrorKind::UnexpectedChar(c),
-                None => LiteralErrorKind::MissingUnit,
+        if i == number {
+            // No digits where a component must begin: say what stands there.
+            return if text[i].is_ascii_alphabetic() {
+                fail(what, i, LiteralErrorKind::MissingDigits)
+            } else {
+                fail(what, i, LiteralErrorKind::UnexpectedChar(char_at(text, i)))
             };
-            return Err(err(offset + i, kind));
         }
-        if i < bytes.len() && (bytes[i] == b'.' || bytes[i] == b',') {
-            return Err(err(offset + i, LiteralErrorKind::Fraction));
+        if i < len && (text[i] == b'.' || text[i] == b',') {
+            return fail(what, i, LiteralErrorKind::Fraction);
         }
         let unit_start = i;
-        while i < bytes.len() && bytes[i].is_ascii_alphabetic() {
+        while i < len && text[i].is_ascii_alphabetic() {
             i += 1;
         }
-        let letters = &body[unit_start..i];
-        let unit = if letters.is_empty() {
-            // Say what stands where the unit should be: nothing, a separator, a non-ASCII letter
-            // (`5µs`: not a unit), or another character (`5 s`).
-            let kind = match body[unit_start..].chars().next() {
-                None | Some('_') => LiteralErrorKind::MissingUnit,
-                Some(c) if c.is_alphabetic() => LiteralErrorKind::UnknownUnit,
-                Some(c) => LiteralErrorKind::UnexpectedChar(c),
+        if i == unit_start {
+            // Say what stands where the unit should be: nothing or a separator (missing), a
+            // non-ASCII character (`5µs`: not a unit), or another character (`5 s`).
+            return if unit_start == len || text[unit_start] == b'_' {
+                fail(what, unit_start, LiteralErrorKind::MissingUnit)
+            } else if text[unit_start] >= 0x80 {
+                fail(what, unit_start, LiteralErrorKind::UnknownUnit)
+            } else {
+                fail(what, 
+                    unit_start,
+                    LiteralErrorKind::UnexpectedChar(char_at(text, unit_start)),
+                )
             };
-            return Err(err(offset + unit_start, kind));
-        } else if letters.eq_ignore_ascii_case("d") && days {
-            Unit::Day
-        } else if letters.eq_ignore_ascii_case("h") {
-            Unit::Hour
-        } else if letters.eq_ignore_ascii_case("m") {
-            Unit::Minute
-        } else if letters.eq_ignore_ascii_case("s") {
-            Unit::Second
-        } else if letters.eq_ignore_ascii_case("ms") {
-            Unit::Milli
-        } else {
-            return Err(err(offset + unit_start, LiteralErrorKind::UnknownUnit));
+        }
+        let unit = match unit_of(text, unit_start, i, days) {
+            Some(u) => u,
+            None => return fail(what, unit_start, LiteralErrorKind::UnknownUnit),
         };
-        match last {
-            Some(prev) if unit <= prev => {
-                return Err(err(offset + unit_start, LiteralErrorKind::UnitOrder(unit)))
+        if let Some(prev) = last {
+            if unit as u8 <= prev as u8 {
+                return fail(what, unit_start, LiteralErrorKind::UnitOrder(unit));
             }
-            Some(_) if value >= unit.limit() => {
-                return Err(err(
-                    offset + start,
-                    LiteralErrorKind::ComponentRange(unit, value),
-                ))
+            if value >= unit.limit() {
+                return fail(what, number, LiteralErrorKind::ComponentRange(unit, value));
             }
-            _ => {}
         }
         last = Some(unit);
-        total = value
-            .checked_mul(unit.millis())
-            .and_then(|v| total.checked_add(v))
-            .ok_or(err(offset + start, LiteralErrorKind::Overflow))?;
+        total = match value.checked_mul(unit.millis()) {
+            Some(v) => match total.checked_add(v) {
+                Some(t) => t,
+                None => return fail(what, number, LiteralErrorKind::Overflow),
+            },
+            None => return fail(what, number, LiteralErrorKind::Overflow),
+        };
     }
     Ok(total)
 }

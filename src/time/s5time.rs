@@ -7,8 +7,9 @@
 
 use core::fmt;
 
-use super::literal::{parse_components, strip_prefix_ci, write_components};
-use super::literal::{LiteralError, LiteralErrorKind};
+use super::bcd::{bcd3_decode, bcd3_encode};
+use super::literal::{has_prefix_ci, parse_components, write_components};
+use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 
 /// The time base of an S5 timer: the interval after which the operating system decrements the
 /// timer value by one unit (seed 000 §9.1, Table 9-1).
@@ -120,36 +121,6 @@ impl std::error::Error for S5TimeError {}
 pub struct S5Time {
     units: u16,
     base: TimeBase,
-}
-
-/// Encodes 0..=999 as three BCD digits (bits 11-0). Values above 999 give digits above 9 in
-/// the hundreds; callers keep `v <= 999`.
-pub const fn bcd3_encode(v: u16) -> u16 {
-    (v / 100) << 8 | (v / 10 % 10) << 4 | (v % 10)
-}
-
-/// Decodes the three BCD digits in bits 11-0 of `field` (bits 15-12 ignored) to 0..=999, or
-/// gives the first digit above 9, from the hundreds down, as `(position, digit)` with position
-/// 0 = ones, 1 = tens, 2 = hundreds (S5T-BCD-01).
-///
-/// ```
-/// use plc_timers::time::{bcd3_decode, bcd3_encode};
-/// assert_eq!(bcd3_decode(0x2127), Ok(127));
-/// assert_eq!(bcd3_decode(0x00A1), Err((1, 0xA)));
-/// assert_eq!(bcd3_decode(bcd3_encode(999)), Ok(999));
-/// ```
-pub const fn bcd3_decode(field: u16) -> Result<u16, (u8, u8)> {
-    let mut value = 0u16;
-    let mut position = 3u8;
-    while position > 0 {
-        position -= 1;
-        let digit = ((field >> (4 * position)) & 0xF) as u8;
-        if digit > 9 {
-            return Err((position, digit));
-        }
-        value = value * 10 + digit as u16;
-    }
-    Ok(value)
 }
 
 /// Kani's symbolic S5TIME: any base, any units within the invariant `units <= 999`.
@@ -281,59 +252,84 @@ impl S5Time {
     }
 }
 
-impl core::str::FromStr for S5Time {
-    type Err = LiteralError;
-
+impl S5Time {
     /// Parses `S5T#aH_bbM_ccS_dddMS`, `S5TIME#…` (case-insensitive, underscores optional, units
     /// from largest to smallest, each at most once; the first may exceed its usual range, as in
-    /// `S5T#120S`) with the automatic base and rounding down, or `W#16#wxyz` (BCD checked, bits
-    /// 15-14 ignored).
+    /// `S5T#120S`) with the automatic base and rounding down, or `W#16#wxyz` (one to four hex
+    /// digits, BCD checked, bits 15-14 ignored). A `const fn`, so that [`crate::s5time!`] checks
+    /// a literal at compile time; [`str::parse`] calls it too.
     ///
     /// ```
     /// use plc_timers::time::{S5Time, TimeBase};
-    /// let t: S5Time = "S5T#2M7S".parse()?;
+    /// let t = S5Time::parse("S5T#2M7S")?;
     /// assert_eq!((t.units(), t.base()), (127, TimeBase::S1));
     /// assert_eq!(t.to_word(), 0x2127);
-    /// assert!("W#16#20A1".parse::<S5Time>().is_err()); // BCD digit A
+    /// assert!(S5Time::parse("W#16#20A1").is_err()); // BCD digit A
     /// # Ok::<(), plc_timers::time::LiteralError>(())
     /// ```
-    fn from_str(text: &str) -> Result<S5Time, LiteralError> {
-        const WHAT: &str = "S5TIME";
-        let err = |position, kind| LiteralError {
-            what: WHAT,
-            position,
-            kind,
-        };
-        if text.is_empty() {
-            return Err(err(0, LiteralErrorKind::Empty));
+    pub const fn parse(text: &str) -> Result<S5Time, LiteralError> {
+        const WHAT: LiteralType = LiteralType::S5Time;
+        const fn fail(position: usize, kind: LiteralErrorKind) -> Result<S5Time, LiteralError> {
+            Err(LiteralError::new(WHAT, position, kind))
         }
-        if let Some(hex) = strip_prefix_ci(text, "W#16#") {
-            let offset = text.len() - hex.len();
-            if hex.is_empty() || hex.len() > 4 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
-                return Err(err(offset, LiteralErrorKind::HexDigits));
+        let b = text.as_bytes();
+        if b.is_empty() {
+            return fail(0, LiteralErrorKind::Empty);
+        }
+        if has_prefix_ci(b, 0, "W#16#") {
+            let offset = 5;
+            let digits = b.len() - offset;
+            if digits == 0 || digits > 4 {
+                return fail(offset, LiteralErrorKind::HexDigits);
             }
-            let word = u16::from_str_radix(hex, 16)
-                .map_err(|_| err(offset, LiteralErrorKind::HexDigits))?;
-            return S5Time::from_word(word).map_err(|e| match e {
-                S5TimeError::BcdDigit {
+            let mut word = 0u16;
+            let mut i = offset;
+            while i < b.len() {
+                let d = match (b[i] as char).to_digit(16) {
+                    Some(d) => d as u16,
+                    None => return fail(offset, LiteralErrorKind::HexDigits),
+                };
+                word = word << 4 | d;
+                i += 1;
+            }
+            return match S5Time::from_word(word) {
+                Ok(t) => Ok(t),
+                // The digit's byte in the text: the last hex digit is the ones digit.
+                Err(S5TimeError::BcdDigit {
                     position, digit, ..
-                } => err(
-                    // The digit's byte in the text: the last hex char is the ones digit.
-                    (offset + hex.len()).saturating_sub(1 + position as usize),
+                }) => fail(
+                    (b.len() - 1).saturating_sub(position as usize),
                     LiteralErrorKind::BcdDigit(digit),
                 ),
-                _ => err(offset, LiteralErrorKind::OutOfRange),
-            });
+                Err(_) => fail(offset, LiteralErrorKind::OutOfRange),
+            };
         }
-        let body = strip_prefix_ci(text, "S5TIME#")
-            .or_else(|| strip_prefix_ci(text, "S5T#"))
-            .ok_or(err(0, LiteralErrorKind::Prefix))?;
-        let offset = text.len() - body.len();
-        if body.starts_with('-') {
-            return Err(err(offset, LiteralErrorKind::OutOfRange));
+        let offset = if has_prefix_ci(b, 0, "S5TIME#") {
+            7
+        } else if has_prefix_ci(b, 0, "S5T#") {
+            4
+        } else {
+            return fail(0, LiteralErrorKind::Prefix);
+        };
+        if offset < b.len() && b[offset] == b'-' {
+            return fail(offset, LiteralErrorKind::Negative);
         }
-        let millis = parse_components(WHAT, body, offset, false)?;
-        S5Time::from_millis(millis).map_err(|_| err(offset, LiteralErrorKind::OutOfRange))
+        match parse_components(WHAT, b, offset, false) {
+            Ok(millis) => match S5Time::from_millis(millis) {
+                Ok(t) => Ok(t),
+                Err(_) => fail(offset, LiteralErrorKind::OutOfRange),
+            },
+            Err(e) => Err(e),
+        }
+    }
+}
+
+impl core::str::FromStr for S5Time {
+    type Err = LiteralError;
+
+    /// [`S5Time::parse`].
+    fn from_str(text: &str) -> Result<S5Time, LiteralError> {
+        S5Time::parse(text)
     }
 }
 

@@ -9,7 +9,7 @@ use std::vec::Vec;
 
 use super::block::Value;
 use super::runner::Recording;
-use crate::time::{S5Time, Time};
+use plc_timers::time::{S5Time, Time};
 
 const WIDTH: f64 = 900.0;
 const LEFT: f64 = 80.0;

@@ -6,10 +6,9 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
-use crate::s5::memory::TimerMemory;
-use crate::s5::reference::S5TimerRef;
-use crate::s5::{S5Input, S5Kind, S5Output};
-use crate::time::S5Time;
+use plc_timers::s5::{S5Input, S5Kind, S5Output, S5TimerOps, S5TimerRef, TimerMemory};
+use plc_timers::time::CpuTime;
+use plc_timers::time::S5Time;
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
@@ -32,7 +31,7 @@ pub(crate) fn lookup(
         .into_iter()
         .find(|k| k.name() == name || k.stl() == name)?;
     let timer = match options.implementation {
-        Implementation::Reference => Timer::Reference(S5TimerRef::new(kind)),
+        Implementation::Reference => Timer::Reference(S5TimerRef::new()),
         Implementation::Optimized => Timer::Optimized(TimerMemory::new()),
     };
     Some(Ok(Box::new(S5Block {
@@ -88,9 +87,9 @@ impl TraceBlock for S5Block {
             fr: row.bool("FR"),
             tv,
         };
-        let t = row.t_ms().unwrap_or(0);
+        let t = CpuTime::from_millis(row.t_ms().unwrap_or(0));
         let output: S5Output = match &mut self.timer {
-            Timer::Reference(timer) => timer.call(t, input),
+            Timer::Reference(timer) => timer.call(self.kind, t, input),
             Timer::Optimized(area) => area.call(0, self.kind, t, input).map_err(|e| CellError {
                 input: "S",
                 message: format!("{e}"),

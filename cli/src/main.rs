@@ -8,7 +8,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 use plc_timers::time::{S5Time, Time};
-use plc_timers::trace::{self, BlockOptions, Implementation, PresetOption, TraceError};
+use plc_timers_cli::trace::{self, BlockOptions, Implementation, PresetOption, TraceError};
 
 /// Siemens S7 timers and counters: reference semantics for traces.
 #[derive(Parser, Debug)]

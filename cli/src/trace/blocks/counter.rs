@@ -5,12 +5,10 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
-use crate::counter::packed::PackedCounter;
-use crate::counter::reference::CounterRef;
-use crate::counter::s5::{
-    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+use plc_timers::counter::s5::{
+    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
 };
-use crate::counter::{CounterInput, CounterInt, CounterKind, CounterOps};
+use plc_timers::counter::{Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterRef};
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
@@ -26,13 +24,26 @@ const CTUD_INPUTS: &[Input] = &[
     Input::bool("LD"),
     PV,
 ];
-const S_CU_INPUTS: &[Input] = &[Input::bool("CU"), Input::bool("S"), Input::bool("R"), PV];
-const S_CD_INPUTS: &[Input] = &[Input::bool("CD"), Input::bool("S"), Input::bool("R"), PV];
+const S_CU_INPUTS: &[Input] = &[
+    Input::bool("CU"),
+    Input::bool("S"),
+    Input::bool("R"),
+    Input::bool("FR"),
+    PV,
+];
+const S_CD_INPUTS: &[Input] = &[
+    Input::bool("CD"),
+    Input::bool("S"),
+    Input::bool("R"),
+    Input::bool("FR"),
+    PV,
+];
 const S_CUD_INPUTS: &[Input] = &[
     Input::bool("CU"),
     Input::bool("CD"),
     Input::bool("S"),
     Input::bool("R"),
+    Input::bool("FR"),
     PV,
 ];
 
@@ -45,12 +56,16 @@ pub(crate) fn lookup(
     options: &BlockOptions,
 ) -> Option<Result<Box<dyn TraceBlock>, String>> {
     if let Some(kind) = S5CounterKind::ALL.into_iter().find(|k| k.name() == name) {
-        return Some(Ok(Box::new(S5CounterBlock {
-            kind,
-            reference: S5CounterRef::new(kind),
-            area: CounterMemory::new(),
-            optimized: options.implementation == Implementation::Optimized,
-        })));
+        return Some(Ok(match options.implementation {
+            Implementation::Reference => Box::new(S5CounterBlock {
+                kind,
+                counter: S5CounterRef::new(),
+            }),
+            Implementation::Optimized => Box::new(S5CounterBlock {
+                kind,
+                counter: S5Counter::new(),
+            }),
+        }));
     }
     let kind = CounterKind::ALL.into_iter().find(|k| k.name() == name)?;
     let ty = options
@@ -79,12 +94,12 @@ fn iec<T: CounterInt>(kind: CounterKind, implementation: Implementation) -> Box<
     match implementation {
         Implementation::Reference => Box::new(IecCounterBlock {
             kind,
-            counter: CounterRef::<T>::new(kind),
+            counter: CounterRef::<T>::new(),
             pv: PresetCache::new(),
         }),
         Implementation::Optimized => Box::new(IecCounterBlock {
             kind,
-            counter: PackedCounter::<T>::new(),
+            counter: Counter::<T>::new(),
             pv: PresetCache::new(),
         }),
     }
@@ -159,14 +174,12 @@ impl<T: CounterInt, C: CounterOps<T>> TraceBlock for IecCounterBlock<T, C> {
     }
 }
 
-struct S5CounterBlock {
+struct S5CounterBlock<C> {
     kind: S5CounterKind,
-    reference: S5CounterRef,
-    area: CounterMemory<1>,
-    optimized: bool,
+    counter: C,
 }
 
-impl TraceBlock for S5CounterBlock {
+impl<C: S5CounterOps> TraceBlock for S5CounterBlock<C> {
     fn name(&self) -> &'static str {
         self.kind.name()
     }
@@ -198,16 +211,10 @@ impl TraceBlock for S5CounterBlock {
             cd: row.bool("CD"),
             s: row.bool("S"),
             r: row.bool("R"),
+            fr: row.bool("FR"),
             pv,
         };
-        let o = if self.optimized {
-            self.area.call(0, self.kind, input).map_err(|e| CellError {
-                input: "PV",
-                message: format!("{e}"),
-            })?
-        } else {
-            self.reference.call(input)
-        };
+        let o = self.counter.call(self.kind, input);
         out.push(Value::Bool(o.q));
         out.push(Value::Int(i128::from(o.cv)));
         out.push(Value::Word(o.cv_bcd));

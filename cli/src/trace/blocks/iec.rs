@@ -5,10 +5,8 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
-use crate::iec::reference::Reference;
-use crate::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
-use crate::time::clock::ClockWord;
-use crate::time::Time;
+use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::time::{CpuTime, Time};
 use crate::trace::block::{CellError, Implementation, Input, Row, TraceBlock, Value};
 use crate::trace::registry::BlockOptions;
 
@@ -29,7 +27,7 @@ pub(crate) fn lookup(
 ) -> Option<Result<Box<dyn TraceBlock>, String>> {
     let kind = IecKind::ALL.into_iter().find(|k| k.name() == name)?;
     Some(Ok(match options.implementation {
-        Implementation::Reference => Box::new(IecBlock::<Reference<u32>>::new(kind)),
+        Implementation::Reference => Box::new(IecBlock::<IecTimerRef<u32>>::new(kind)),
         Implementation::Optimized => Box::new(IecBlock::<IecTimer>::new(kind)),
     }))
 }
@@ -82,8 +80,8 @@ impl<T: IecTimerOps<u32> + Default> TraceBlock for IecBlock<T> {
     fn step(&mut self, row: &Row<'_>, out: &mut Vec<Value>) -> Result<(), CellError> {
         let text = row.preset("PT").unwrap_or("");
         let pt = self.pt.get(text, parse_pt)?;
-        // The S7-1200 millisecond clock is t_ms modulo 2^32 (trace contract).
-        let now = u32::from_u64_wrapping(row.t_ms().unwrap_or(0));
+        // The timer sees the S7-1200 millisecond clock, t_ms modulo 2^32 (trace contract).
+        let now = CpuTime::from_millis(row.t_ms().unwrap_or(0));
         let input = IecInput {
             input: row.bool("IN"),
             pt,

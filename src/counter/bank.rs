@@ -1,0 +1,112 @@
+//! A bank of CTUD counters in structure-of-arrays form, for a soft-PLC that scans thousands of
+//! counters sharing one preset. Each counter behaves exactly as [`super::CounterRef`] called as
+//! `CTUD` once per scan (CNT-EQUIV-01, checked in `proofs/counter.rs`).
+
+use super::{outputs, CounterInt, CounterOutput, CounterState};
+
+const CU_PREV: u8 = 0b01;
+const CD_PREV: u8 = 0b10;
+
+/// The inputs of one scan of a [`CounterBank`]: input `x[i]` belongs to counter `i`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BankInputs<'a, const N: usize> {
+    /// CU of every counter.
+    pub cu: &'a [bool; N],
+    /// CD of every counter.
+    pub cd: &'a [bool; N],
+    /// R of every counter.
+    pub r: &'a [bool; N],
+    /// LD of every counter.
+    pub ld: &'a [bool; N],
+}
+
+/// `N` CTUD counters of integer type `T`, called together once per scan with one preset.
+///
+/// ```
+/// use plc_timers::counter::{BankInputs, CounterBank};
+///
+/// // Parts counted on four lines, each batch of 3; line 2 is reset.
+/// let mut lines = CounterBank::<i16, 4>::new();
+/// let none = [false; 4];
+/// let reset = [false, false, true, false];
+/// for pulse in [true, false, true, false, true] {
+///     let cu = [pulse, pulse, pulse, false];
+///     lines.scan(&BankInputs { cu: &cu, cd: &none, r: &reset, ld: &none }, 3);
+/// }
+/// let full: Vec<bool> = lines.outputs(3).map(|o| o.qu).collect();
+/// assert_eq!(full, [true, true, false, false]);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CounterBank<T, const N: usize> {
+    cv: [T; N],
+    edges: [u8; N],
+}
+
+impl<T: CounterInt, const N: usize> Default for CounterBank<T, N> {
+    fn default() -> Self {
+        CounterBank::new()
+    }
+}
+
+impl<T: CounterInt, const N: usize> CounterBank<T, N> {
+    /// The number of counters.
+    pub const LEN: usize = N;
+
+    /// A bank of new counters.
+    pub const fn new() -> CounterBank<T, N> {
+        CounterBank {
+            cv: [T::ZERO; N],
+            edges: [0; N],
+        }
+    }
+
+    /// The state of counter `i`, if it exists.
+    pub fn get(&self, i: usize) -> Option<CounterState<T>> {
+        let e = *self.edges.get(i)?;
+        Some(CounterState {
+            cv: self.cv[i],
+            cu_prev: e & CU_PREV != 0,
+            cd_prev: e & CD_PREV != 0,
+        })
+    }
+
+    /// Puts counter `i` in `state`; `false` when `i` is out of range.
+    pub fn set(&mut self, i: usize, state: CounterState<T>) -> bool {
+        if i >= N {
+            return false;
+        }
+        self.cv[i] = state.cv;
+        self.edges[i] = u8::from(state.cu_prev) * CU_PREV | u8::from(state.cd_prev) * CD_PREV;
+        true
+    }
+
+    /// The outputs of counter `i` for preset `pv`, if it exists.
+    pub fn output(&self, i: usize, pv: T) -> Option<CounterOutput<T>> {
+        self.cv.get(i).map(|&cv| outputs(cv, pv))
+    }
+
+    /// The outputs of every counter for preset `pv`, counter 0 first.
+    pub fn outputs(&self, pv: T) -> impl ExactSizeIterator<Item = CounterOutput<T>> + '_ {
+        self.cv.iter().map(move |&cv| outputs(cv, pv))
+    }
+
+    /// One scan: every counter called once as CTUD with preset `pv`.
+    pub fn scan(&mut self, inputs: &BankInputs<'_, N>, pv: T) {
+        for i in 0..N {
+            let now = u8::from(inputs.cu[i]) * CU_PREV | u8::from(inputs.cd[i]) * CD_PREV;
+            let rising = now & !self.edges[i];
+            self.edges[i] = now;
+            self.cv[i] = if inputs.r[i] {
+                T::ZERO
+            } else if inputs.ld[i] {
+                pv
+            } else {
+                match rising {
+                    CU_PREV => self.cv[i].saturating_inc(),
+                    CD_PREV => self.cv[i].saturating_dec(),
+                    _ => self.cv[i],
+                }
+            };
+        }
+    }
+}

@@ -1,0 +1,154 @@
+//! A counter memory area of S5 counters (`C 0` .. `C N-1`), with the STL operations on it.
+
+use super::word::S5Counter;
+use super::{CounterPreset, S5CounterInput, S5CounterKind, S5CounterOutput, S5CounterState};
+use crate::operand::{NoSuchOperand, Operand};
+
+/// A counter memory area of `N` S5 counters (256 by default).
+///
+/// The LAD boxes ([`CounterMemory::call`]) and the STL operations ([`CounterMemory::cu`],
+/// [`CounterMemory::cd`], [`CounterMemory::set`], [`CounterMemory::reset`],
+/// [`CounterMemory::fr`], [`CounterMemory::load`], …) act on the same words; each operation
+/// evaluates and stores only its own input's edge memory (SC-STL-01).
+///
+/// ```
+/// use plc_timers::counter::s5::{CounterMemory, CounterPreset, S5CounterInput, S5CounterKind};
+///
+/// // A scan loop: C 0 counts parts on a rising sensor, C 1 is loaded with 10 and counts down.
+/// let mut counters = CounterMemory::<2>::new();
+/// let ten = CounterPreset::new(10)?;
+/// counters.set(1, true, ten)?;
+/// for sensor in [true, false, true, false, true] {
+///     counters.call(0, S5CounterKind::SCu, S5CounterInput { cu: sensor, ..Default::default() })?;
+///     counters.cd(1, sensor)?;
+/// }
+/// assert_eq!(counters.load(0)?, 3);
+/// assert_eq!(counters.load_bcd(1)?, 0x0007);
+/// let q: Vec<bool> = counters.outputs().map(|o| o.q).collect();
+/// assert_eq!(q, [true, true]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CounterMemory<const N: usize = 256> {
+    words: [S5Counter; N],
+}
+
+impl<const N: usize> Default for CounterMemory<N> {
+    fn default() -> Self {
+        CounterMemory::new()
+    }
+}
+
+impl<const N: usize> CounterMemory<N> {
+    /// The number of counters.
+    pub const LEN: usize = N;
+
+    /// An area of cleared counters.
+    pub const fn new() -> CounterMemory<N> {
+        CounterMemory {
+            words: [S5Counter::new(); N],
+        }
+    }
+
+    /// The counter words.
+    pub const fn words(&self) -> &[S5Counter; N] {
+        &self.words
+    }
+
+    /// The state of counter `index`.
+    pub fn get(&self, index: usize) -> Result<S5CounterState, NoSuchOperand> {
+        self.read(index).map(S5Counter::state)
+    }
+
+    /// Puts counter `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
+    pub fn set_state(&mut self, index: usize, state: S5CounterState) -> Result<bool, NoSuchOperand> {
+        let w = self.word(index)?;
+        Ok(match S5Counter::from_state(state) {
+            Some(new) => {
+                *w = new;
+                true
+            }
+            None => false,
+        })
+    }
+
+    /// The outputs (Q, CV, CV_BCD) of every counter, `C 0` first.
+    pub fn outputs(&self) -> impl ExactSizeIterator<Item = S5CounterOutput> + '_ {
+        self.words.iter().map(|w| w.output())
+    }
+
+    fn word(&mut self, index: usize) -> Result<&mut S5Counter, NoSuchOperand> {
+        self.words
+            .get_mut(index)
+            .ok_or(NoSuchOperand::new(Operand::Counter, index, N))
+    }
+
+    fn read(&self, index: usize) -> Result<S5Counter, NoSuchOperand> {
+        self.words
+            .get(index)
+            .copied()
+            .ok_or(NoSuchOperand::new(Operand::Counter, index, N))
+    }
+
+    fn apply(
+        &mut self,
+        index: usize,
+        op: impl FnOnce(S5Counter) -> S5Counter,
+    ) -> Result<(), NoSuchOperand> {
+        let w = self.word(index)?;
+        *w = op(*w);
+        Ok(())
+    }
+
+    /// `FR C n` with RLO `rlo`: a rising RLO clears the edge memories of CU, CD and S (SC-FR-01).
+    pub fn fr(&mut self, index: usize, rlo: bool) -> Result<(), NoSuchOperand> {
+        self.apply(index, |w| w.enable(rlo))
+    }
+
+    /// `CU C n` (`ZV Z n`) with RLO `rlo`: count up on a rising RLO.
+    pub fn cu(&mut self, index: usize, rlo: bool) -> Result<(), NoSuchOperand> {
+        self.apply(index, |w| w.count_up(rlo))
+    }
+
+    /// `CD C n` (`ZR Z n`) with RLO `rlo`: count down on a rising RLO.
+    pub fn cd(&mut self, index: usize, rlo: bool) -> Result<(), NoSuchOperand> {
+        self.apply(index, |w| w.count_down(rlo))
+    }
+
+    /// `S C n` with RLO `rlo` and the preset in ACCU 1: set CV to PV on a rising RLO.
+    pub fn set(&mut self, index: usize, rlo: bool, pv: CounterPreset) -> Result<(), NoSuchOperand> {
+        self.apply(index, |w| w.set(rlo, pv))
+    }
+
+    /// `R C n` with RLO `rlo`: CV = 0 while 1.
+    pub fn reset(&mut self, index: usize, rlo: bool) -> Result<(), NoSuchOperand> {
+        self.apply(index, |w| w.reset(rlo))
+    }
+
+    /// `L C n`: CV in binary.
+    pub fn load(&self, index: usize) -> Result<u16, NoSuchOperand> {
+        self.read(index).map(|c| c.output().cv)
+    }
+
+    /// `LC C n`: CV in BCD.
+    pub fn load_bcd(&self, index: usize) -> Result<u16, NoSuchOperand> {
+        self.read(index).map(|c| c.output().cv_bcd)
+    }
+
+    /// `A C n`: Q = CV != 0.
+    pub fn status(&self, index: usize) -> Result<bool, NoSuchOperand> {
+        self.read(index).map(|c| c.output().q)
+    }
+
+    /// The box `kind` on counter `index`: all its inputs in one call.
+    pub fn call(
+        &mut self,
+        index: usize,
+        kind: S5CounterKind,
+        input: S5CounterInput,
+    ) -> Result<S5CounterOutput, NoSuchOperand> {
+        let w = self.word(index)?;
+        *w = w.execute(kind, input);
+        Ok(w.output())
+    }
+}

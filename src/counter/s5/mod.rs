@@ -1,0 +1,170 @@
+//! The S5 counters of S7-300/400: `S_CU`, `S_CD`, `S_CUD` (STL `CU`/`CD`/`S`/`R`/`FR`/`L C`/`LC C`,
+//! German `ZV`/`ZR`/`S`/`R`/`FR`/`L Z`/`LC Z`), the same family as the S5 timers.
+//!
+//! CV is 0..=999 and saturates at both ends; the preset is `C#0`..`C#999`, loaded as three BCD
+//! digits ([`CounterPreset`]); Q = CV != 0. One interface, [`S5CounterOps`], two
+//! implementations:
+//! - [`S5CounterRef`]: the rules one by one;
+//! - [`S5Counter`]: a counter packed in one 16-bit word;
+//!
+//! and [`CounterMemory`], a counter memory area with the STL operations.
+//!
+//! ```
+//! use plc_timers::counter::s5::{
+//!     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
+//! };
+//!
+//! let pv = CounterPreset::parse("C#998")?;
+//! let set = S5CounterInput { s: true, pv, ..S5CounterInput::default() };
+//! let up = S5CounterInput { cu: true, pv, ..S5CounterInput::default() };
+//! let mut reference = S5CounterRef::new();
+//! let mut optimized = S5Counter::new();
+//! for c in [&mut reference as &mut dyn S5CounterOps, &mut optimized] {
+//!     assert_eq!(c.call(S5CounterKind::SCu, set).cv, 998); // a rising S loads PV
+//!     assert_eq!(c.call(S5CounterKind::SCu, up).cv, 999);
+//!     c.call(S5CounterKind::SCu, S5CounterInput::default());
+//!     assert_eq!(c.call(S5CounterKind::SCu, up).cv, 999); // saturates, never wraps
+//! }
+//! # Ok::<(), plc_timers::counter::s5::CounterPresetError>(())
+//! ```
+
+pub mod memory;
+pub mod preset;
+pub mod reference;
+pub mod word;
+
+pub use memory::CounterMemory;
+pub use preset::{CounterPreset, CounterPresetError};
+pub use reference::S5CounterRef;
+pub use word::S5Counter;
+
+use crate::time::bcd3_encode;
+
+/// Which S5 counter box.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(kani, derive(kani::Arbitrary))]
+pub enum S5CounterKind {
+    /// `S_CU` (German `Z_VORW`): up counter (no CD input).
+    #[doc(alias = "Z_VORW")]
+    SCu,
+    /// `S_CD` (German `Z_RUECK`): down counter (no CU input).
+    #[doc(alias = "Z_RUECK")]
+    SCd,
+    /// `S_CUD` (German `ZAEHLER`): up-down counter.
+    #[doc(alias = "ZAEHLER")]
+    SCud,
+}
+
+impl S5CounterKind {
+    /// All three.
+    pub const ALL: [S5CounterKind; 3] =
+        [S5CounterKind::SCu, S5CounterKind::SCd, S5CounterKind::SCud];
+
+    /// The box name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            S5CounterKind::SCu => "S_CU",
+            S5CounterKind::SCd => "S_CD",
+            S5CounterKind::SCud => "S_CUD",
+        }
+    }
+
+    /// Whether the box has the CU input (S_CU and S_CUD; SC-INPUTS-01).
+    pub const fn counts_up(self) -> bool {
+        !matches!(self, S5CounterKind::SCd)
+    }
+
+    /// Whether the box has the CD input (S_CD and S_CUD; SC-INPUTS-01).
+    pub const fn counts_down(self) -> bool {
+        !matches!(self, S5CounterKind::SCu)
+    }
+}
+
+/// The largest counter value.
+pub const CV_MAX: u16 = 999;
+
+/// The inputs of one S5 counter box call.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct S5CounterInput {
+    /// `CU` (`ZV`), count up on a rising edge.
+    pub cu: bool,
+    /// `CD` (`ZR`), count down on a rising edge.
+    pub cd: bool,
+    /// `S`, set CV to PV on a rising edge.
+    pub s: bool,
+    /// `R`, reset CV to 0 (level).
+    pub r: bool,
+    /// `FR`, the enable (STL `FR C n`; the LAD boxes have none: false there): a rising edge
+    /// clears the edge memories of CU, CD and S.
+    pub fr: bool,
+    /// `PV`.
+    pub pv: CounterPreset,
+}
+
+/// The outputs of one S5 counter box call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct S5CounterOutput {
+    /// `Q`: CV != 0.
+    pub q: bool,
+    /// `CV` (`DUAL`), binary.
+    pub cv: u16,
+    /// `CV_BCD` (`DEZ`), three BCD digits.
+    pub cv_bcd: u16,
+}
+
+/// The state of an S5 counter as the reference names it.
+///
+/// A plain description: [`S5CounterState::is_valid`] says whether a counter can be in it; the
+/// types that hold a counter take a state only through their checking `from_state`.
+///
+/// ```
+/// use plc_timers::counter::s5::S5CounterState;
+/// assert!(S5CounterState { cv: 999, ..Default::default() }.is_valid());
+/// assert!(!S5CounterState { cv: 1000, ..Default::default() }.is_valid());
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct S5CounterState {
+    /// `CV`, 0..=999.
+    pub cv: u16,
+    /// Edge memory of CU.
+    pub cu_prev: bool,
+    /// Edge memory of CD.
+    pub cd_prev: bool,
+    /// Edge memory of S.
+    pub s_prev: bool,
+    /// Edge memory of FR.
+    pub fr_prev: bool,
+}
+
+impl S5CounterState {
+    /// A new counter: CV = 0, every edge memory 0.
+    pub const RESET: S5CounterState = S5CounterState {
+        cv: 0,
+        cu_prev: false,
+        cd_prev: false,
+        s_prev: false,
+        fr_prev: false,
+    };
+
+    /// The invariant: CV <= 999 (SC-RANGE-01).
+    pub const fn is_valid(&self) -> bool {
+        self.cv <= CV_MAX
+    }
+
+    /// The outputs this state shows (SC-Q-01: Q = CV != 0).
+    pub const fn output(&self) -> S5CounterOutput {
+        S5CounterOutput {
+            q: self.cv != 0,
+            cv: self.cv,
+            cv_bcd: bcd3_encode(self.cv),
+        }
+    }
+}
+
+/// What both S5 counter implementations offer.
+pub trait S5CounterOps {
+    /// One call of the box `kind` (the inputs it lacks are taken as 0, SC-INPUTS-01).
+    fn call(&mut self, kind: S5CounterKind, input: S5CounterInput) -> S5CounterOutput;
+    /// The state, as the reference names it.
+    fn state(&self) -> S5CounterState;
+}

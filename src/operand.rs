@@ -1,0 +1,76 @@
+//! Operands of the S7-300/400 memory areas (`T n`, `C n`), and the error for one that an area
+//! does not have.
+
+use core::fmt;
+
+/// Which memory area an operand addresses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Operand {
+    /// A timer, `T n`.
+    Timer,
+    /// A counter, `C n` (German `Z n`).
+    Counter,
+}
+
+impl Operand {
+    /// The operand's letter in the international mnemonics (`T`, `C`).
+    pub const fn letter(self) -> &'static str {
+        match self {
+            Operand::Timer => "T",
+            Operand::Counter => "C",
+        }
+    }
+
+    const fn noun(self) -> &'static str {
+        match self {
+            Operand::Timer => "timer",
+            Operand::Counter => "counter",
+        }
+    }
+}
+
+/// An operation named a timer or counter that the area does not have.
+///
+/// ```
+/// use plc_timers::s5::TimerMemory;
+/// let area = TimerMemory::<4>::new();
+/// let e = area.status(7).unwrap_err();
+/// assert_eq!(e.to_string(), "no timer T 7: this area has T 0 to T 3");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NoSuchOperand {
+    /// The area.
+    pub operand: Operand,
+    /// The number given.
+    pub index: usize,
+    /// How many operands the area has (numbers 0 .. count-1).
+    pub count: usize,
+}
+
+impl NoSuchOperand {
+    pub(crate) const fn new(operand: Operand, index: usize, count: usize) -> NoSuchOperand {
+        NoSuchOperand {
+            operand,
+            index,
+            count,
+        }
+    }
+}
+
+impl fmt::Display for NoSuchOperand {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (noun, letter) = (self.operand.noun(), self.operand.letter());
+        if self.count == 0 {
+            return write!(f, "no {noun} {letter} {}: this area is empty", self.index);
+        }
+        write!(
+            f,
+            "no {noun} {letter} {}: this area has {letter} 0 to {letter} {}",
+            self.index,
+            self.count - 1
+        )
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for NoSuchOperand {}

@@ -1,0 +1,324 @@
+//! The optimized S5 timer: the whole state of one timer packed in one 32-bit word
+//! ([`TimerWord`]), and [`S5Timer`], a word with the time of its previous call.
+//!
+//! ```text
+//!  31 .. 21   20      19      18          17   16        15 14  13 12  11 10  9 .. 0
+//!  0          FR edge S edge  Q on expiry Q    running   0  0   base   0  0   value
+//! ```
+//!
+//! The low half is the CPU's 16-bit timer word as LAD manual §9.1 describes it: the remaining
+//! value in binary in bits 9-0, the time base in bits 13-12. The high half holds what the CPU
+//! keeps beside it: the status Q, whether the time runs, the status the timer takes when the time
+//! runs out (1 for the on-delays, 0 for the pulses and the off-delay; Berger §7), and the edge
+//! memories of S and FR. One word per timer, so a timer memory area is a `[u32; N]` that the
+//! OS tick processes as a vector, without knowing the timers' kinds.
+
+use super::{ticks_between, S5Input, S5Kind, S5Output, S5State, S5TimerOps};
+use crate::time::{CpuTime, S5Time, TimeBase, BCD3_TABLE};
+
+/// Bits 9-0: the remaining value in binary.
+pub const VALUE: u32 = 0x0000_03FF;
+/// Bits 13-12: the time base.
+pub const BASE: u32 = 0x0000_3000;
+/// Bit 16: the time is running.
+pub const RUNNING: u32 = 1 << 16;
+/// Bit 17: the status Q.
+pub const Q: u32 = 1 << 17;
+/// Bit 18: the status when the running time runs out.
+pub const Q_ON_EXPIRY: u32 = 1 << 18;
+/// Bit 19: S at the previous execution.
+pub const S_PREV: u32 = 1 << 19;
+/// Bit 20: FR at the previous execution.
+pub const FR_PREV: u32 = 1 << 20;
+/// Every bit a word may have set.
+const USED: u32 = VALUE | BASE | RUNNING | Q | Q_ON_EXPIRY | S_PREV | FR_PREV;
+
+// The seven fields are disjoint: no two masks share a bit. So `a | b` of two fields equals
+// `a ^ b` and `a + b` (the code uses `|`), and clearing one field (`w & !MASK`) leaves every
+// other field as it was.
+const _: () = {
+    let masks = [VALUE, BASE, RUNNING, Q, Q_ON_EXPIRY, S_PREV, FR_PREV];
+    let mut union = 0u32;
+    let mut i = 0;
+    while i < masks.len() {
+        assert!(union & masks[i] == 0, "timer word fields overlap");
+        union |= masks[i];
+        i += 1;
+    }
+    assert!(union == USED);
+};
+
+/// One timer, packed in a word. Its field is private: every word this type holds is a valid
+/// state (value at most 999, no stray bits, no expiry status on a stopped timer), which
+/// [`TimerWord::from_bits`] checks.
+///
+/// ```
+/// use plc_timers::s5::{S5Input, S5Kind, TimerWord};
+/// let tv = plc_timers::s5time!("S5T#2M7S"); // 127 units of 1 s
+/// let w = TimerWord::RESET.execute(S5Kind::SPext, S5Input::new(true, false, tv));
+/// assert_eq!((w.q(), w.value(), w.bcd()), (true, 127, 0x2127));
+/// assert_eq!(w.tick(27).value(), 100);
+/// assert!(TimerWord::from_bits(0x03E8).is_none()); // value field 1000
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct TimerWord(u32);
+
+/// `mask` if `b`, else 0.
+const fn bit(b: bool, mask: u32) -> u32 {
+    (b as u32).wrapping_neg() & mask
+}
+
+impl TimerWord {
+    /// A cleared timer.
+    pub const RESET: TimerWord = TimerWord(0);
+
+    /// The word with bits `bits`, or `None` when it is not a valid state: a value field above
+    /// 999, a bit outside the fields, or an expiry status on a stopped timer.
+    pub const fn from_bits(bits: u32) -> Option<TimerWord> {
+        let valid = bits & !USED == 0
+            && bits & VALUE <= 999
+            && (bits & RUNNING != 0 || bits & Q_ON_EXPIRY == 0);
+        if valid {
+            Some(TimerWord(bits))
+        } else {
+            None
+        }
+    }
+
+    /// The word's bits.
+    pub const fn bits(self) -> u32 {
+        self.0
+    }
+
+    /// The word holding `state`, or `None` when the state is not valid.
+    pub const fn from_state(state: S5State) -> Option<TimerWord> {
+        if !state.is_valid() {
+            return None;
+        }
+        Some(TimerWord(
+            state.value as u32
+                | (state.base.bits() as u32) << 12
+                | bit(state.running, RUNNING)
+                | bit(state.q, Q)
+                | bit(state.q_on_expiry, Q_ON_EXPIRY)
+                | bit(state.s_prev, S_PREV)
+                | bit(state.fr_prev, FR_PREV),
+        ))
+    }
+
+    /// The abstraction function: the reference state this word represents. With
+    /// [`TimerWord::from_state`] a bijection between words and valid states.
+    pub const fn state(self) -> S5State {
+        let w = self.0;
+        S5State {
+            running: w & RUNNING != 0,
+            value: (w & VALUE) as u16,
+            base: TimeBase::from_bits((w >> 12) as u8),
+            q: w & Q != 0,
+            q_on_expiry: w & Q_ON_EXPIRY != 0,
+            s_prev: w & S_PREV != 0,
+            fr_prev: w & FR_PREV != 0,
+        }
+    }
+
+    /// Whether the time is running.
+    pub const fn is_running(self) -> bool {
+        self.0 & RUNNING != 0
+    }
+
+    /// The remaining value (`L T n`, `BI`).
+    pub const fn value(self) -> u16 {
+        (self.0 & VALUE) as u16
+    }
+
+    /// The time base.
+    pub const fn base(self) -> TimeBase {
+        TimeBase::from_bits((self.0 >> 12) as u8)
+    }
+
+    /// The status (`A T n`, `Q`).
+    pub const fn q(self) -> bool {
+        self.0 & Q != 0
+    }
+
+    /// The value as the DEZ/BCD word with the base (`LC T n`, `BCD`): a table lookup instead of
+    /// two divisions.
+    pub const fn bcd(self) -> u16 {
+        (self.0 & BASE) as u16 | BCD3_TABLE[(self.0 & VALUE) as usize]
+    }
+
+    /// The outputs of the box.
+    pub const fn output(self) -> S5Output {
+        S5Output {
+            q: self.q(),
+            bi: self.value(),
+            bcd: self.bcd(),
+        }
+    }
+
+    /// The end of the time: stop, Q takes the expiry status, which is cleared. Applied where
+    /// `expired` is all ones, a no-op where it is 0.
+    #[inline]
+    const fn expire_where(w: u32, expired: u32) -> u32 {
+        let q = (w & Q_ON_EXPIRY) >> 1; // bit 18 to bit 17
+        (w & !(expired & (RUNNING | Q | Q_ON_EXPIRY))) | (expired & q)
+    }
+
+    /// Applies `n` ticks of the word's base: `min(n, value)` units off a running timer; reaching
+    /// 0 stops it and Q takes its expiry status. Branch-free, so that a loop over an area
+    /// vectorizes.
+    #[inline]
+    #[must_use]
+    pub const fn tick(self, n: u64) -> TimerWord {
+        let w = self.0;
+        let value = w & VALUE;
+        let running = w & RUNNING != 0;
+        let dec = if n < value as u64 { n as u32 } else { value };
+        let dec = dec & bit(running, VALUE);
+        let left = value - dec;
+        let expired = bit(dec != 0 && left == 0, u32::MAX);
+        TimerWord(Self::expire_where((w & !VALUE) | left, expired))
+    }
+
+    /// One tick of base code `base_bits` (0..=3): the OS tick as it comes, every base interval.
+    /// Pure 32-bit arithmetic without branches, so that a pass over an area vectorizes:
+    /// subtracting 1 from a non-zero value field cannot borrow into the other fields.
+    #[inline]
+    #[must_use]
+    pub const fn tick_once(self, base_bits: u32) -> TimerWord {
+        let w = self.0;
+        let active = ((w & (RUNNING | BASE)) == (RUNNING | base_bits << 12)) as u32;
+        let value = w & VALUE;
+        let dec = active & (value != 0) as u32;
+        let expired = (dec & (value == 1) as u32).wrapping_neg();
+        TimerWord(Self::expire_where(w - dec, expired))
+    }
+
+    /// The `process` step of an execution: a running timer with value 0 (started with TV = 0)
+    /// is found expired (Berger §7).
+    #[inline]
+    const fn process_zero(self) -> TimerWord {
+        let w = self.0;
+        let zero_running = w & RUNNING != 0 && w & VALUE == 0;
+        TimerWord(Self::expire_where(w, bit(zero_running, u32::MAX)))
+    }
+
+    /// `FR T n` with RLO `fr`: a rising edge clears the start edge memory (S5TMR-FR-01).
+    #[inline]
+    #[must_use]
+    pub const fn enable(self, fr: bool) -> TimerWord {
+        let w = self.0;
+        let rising = fr && w & FR_PREV == 0;
+        TimerWord((w & !(bit(rising, S_PREV) | FR_PREV)) | bit(fr, FR_PREV))
+    }
+
+    /// `SP/SE/SD/SS/SF T n` with RLO `s` and time value `tv` already loaded.
+    #[inline]
+    #[must_use]
+    pub const fn start(self, kind: S5Kind, s: bool, tv: S5Time) -> TimerWord {
+        let w = self.process_zero().0;
+        let rising = s && w & S_PREV == 0;
+        let falling = !s && w & S_PREV != 0;
+        let running = w & RUNNING != 0;
+        let loaded = tv.units() as u32 | RUNNING | (tv.base().bits() as u32) << 12;
+        let edges = w & (S_PREV | FR_PREV);
+        let stopped = w & !(RUNNING | Q | Q_ON_EXPIRY);
+        let w = match kind {
+            S5Kind::SPulse | S5Kind::SPext if rising => edges | loaded | Q,
+            S5Kind::SPulse if !s && running => stopped,
+            S5Kind::SOdt if rising => edges | loaded | Q_ON_EXPIRY,
+            S5Kind::SOdt if !s => stopped,
+            // S_ODTS keeps its status: Q = 1 stays from the first expiry until R (SS-Q-01).
+            S5Kind::SOdts if rising => edges | loaded | (w & Q) | Q_ON_EXPIRY,
+            S5Kind::SOffdt if falling => edges | loaded | Q,
+            S5Kind::SOffdt if rising => stopped | Q,
+            _ => w,
+        };
+        TimerWord((w & !S_PREV) | bit(s, S_PREV))
+    }
+
+    /// `R T n` with RLO `r`: while 1, stopped, value and base 0, Q = 0; edge memories kept.
+    #[inline]
+    #[must_use]
+    pub const fn reset(self, r: bool) -> TimerWord {
+        TimerWord(self.0 & !bit(r, VALUE | BASE | RUNNING | Q | Q_ON_EXPIRY))
+    }
+
+    /// One box execution (`FR`, start, `R`), the ticks already applied.
+    #[inline]
+    #[must_use]
+    pub const fn execute(self, kind: S5Kind, input: S5Input) -> TimerWord {
+        self.enable(input.fr)
+            .start(kind, input.s, input.tv)
+            .reset(input.r)
+    }
+}
+
+/// One optimized timer on its own (outside a timer memory area): the packed word and the CPU
+/// time of its previous execution, from which the ticks of its base are counted, as the
+/// reference does. The ticks are only counted while the timer runs (a stopped timer ignores
+/// them).
+///
+/// ```
+/// use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps};
+/// use plc_timers::time::CpuTime;
+///
+/// let tv = plc_timers::s5time!("S5T#20MS");
+/// let mut sf = S5Timer::new();
+/// let at = CpuTime::from_millis;
+/// assert!(sf.call(S5Kind::SOffdt, at(0), S5Input::new(true, false, tv)).q); // S = 1: Q = 1
+/// assert!(sf.call(S5Kind::SOffdt, at(5), S5Input::new(false, false, tv)).q); // S falls: runs
+/// assert!(!sf.call(S5Kind::SOffdt, at(20), S5Input::new(false, false, tv)).q); // 2 ticks: off
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct S5Timer {
+    word: TimerWord,
+    last_call: CpuTime,
+}
+
+impl S5Timer {
+    /// A cleared timer whose previous execution was at CPU time 0.
+    pub const fn new() -> S5Timer {
+        S5Timer {
+            word: TimerWord::RESET,
+            last_call: CpuTime::ZERO,
+        }
+    }
+
+    /// The timer in `state` whose previous execution was at `last_call`, or `None` when the
+    /// state is not valid.
+    pub const fn from_state(state: S5State, last_call: CpuTime) -> Option<S5Timer> {
+        match TimerWord::from_state(state) {
+            Some(word) => Some(S5Timer { word, last_call }),
+            None => None,
+        }
+    }
+
+    /// The timer word.
+    pub const fn word(&self) -> TimerWord {
+        self.word
+    }
+
+    /// The CPU time of the previous execution.
+    pub const fn last_call(&self) -> CpuTime {
+        self.last_call
+    }
+}
+
+impl S5TimerOps for S5Timer {
+    #[inline]
+    fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
+        if self.word.is_running() {
+            let n = ticks_between(self.last_call, now, self.word.base());
+            self.word = self.word.tick(n);
+        }
+        self.last_call = now;
+        self.word = self.word.execute(kind, input);
+        self.word.output()
+    }
+
+    fn state(&self) -> S5State {
+        self.word.state()
+    }
+}
