@@ -67,11 +67,15 @@ impl S5CounterRef {
         s.cd_prev = rlo;
     }
 
-    /// `S C n` with the preset in ACCU 1 (SC-PRIO-01): a rising RLO sets CV to PV.
+    /// `S C n` with the preset in ACCU 1 (SC-SET-01): a rising RLO sets CV to PV and clears
+    /// the edge memories of CU and CD, so that a count input held at 1 counts once at its next
+    /// operation (the TIA Portal help on S_CU: "counts once in the next cycle").
     pub fn set(&mut self, rlo: bool, pv: super::CounterPreset) {
         let s = &mut self.state;
         if rlo && !s.s_prev {
             s.cv = pv.value();
+            s.cu_prev = false;
+            s.cd_prev = false;
         }
         s.s_prev = rlo;
     }

@@ -113,13 +113,14 @@ impl S5Counter {
         S5Counter(((w & !CD_PREV) | bit(rlo, CD_PREV)) - down as u16)
     }
 
-    /// `S C n` with RLO `rlo` and the preset `pv` in ACCU 1: a rising RLO sets CV to PV.
+    /// `S C n` with RLO `rlo` and the preset `pv` in ACCU 1: a rising RLO sets CV to PV and
+    /// clears the edge memories of CU and CD.
     #[inline]
     #[must_use]
     pub const fn set(self, rlo: bool, pv: super::CounterPreset) -> S5Counter {
         let w = self.0;
         let w = if rlo && w & S_PREV == 0 {
-            (w & !CV) | pv.value()
+            (w & !(CV | CU_PREV | CD_PREV)) | pv.value()
         } else {
             w
         };
