@@ -125,7 +125,55 @@ impl<C: ClockWord> IecTimerOf<C> {
             q: f & flag::Q != 0,
         }
     }
+}
 
+impl IecTimer {
+    /// The 16 bytes of the structure in its memory layout (native byte order): START, PT, ET,
+    /// the flag byte, three zero bytes. For saving a retentive structure.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
+    /// use plc_timers::time::CpuTime;
+    /// let mut t = IecTimer::new();
+    /// t.call(IecKind::Ton, CpuTime::from_millis(7), IecInput::new(true, plc_timers::time!("T#1S")));
+    /// assert_eq!(IecTimer::from_bytes(t.to_bytes()), Some(t));
+    /// ```
+    pub fn to_bytes(&self) -> [u8; 16] {
+        let mut b = [0u8; 16];
+        b[0..4].copy_from_slice(&self.start.to_ne_bytes());
+        b[4..8].copy_from_slice(&self.pt.to_ne_bytes());
+        b[8..12].copy_from_slice(&self.et.to_ne_bytes());
+        b[12] = self.flags;
+        b
+    }
+
+    /// The structure saved in `bytes` by [`IecTimer::to_bytes`] (from retentive memory, or an
+    /// area shared with another runtime), or `None` when the bytes are not a state the
+    /// operations can reach: a flag bit outside IN, Q, RUNNING and the kind, ET above PT, a
+    /// START kept by a stopped timer, or non-zero padding.
+    ///
+    /// ```
+    /// use plc_timers::iec::IecTimer;
+    /// let mut bytes = IecTimer::new().to_bytes();
+    /// bytes[12] = 0x80; // a flag bit no operation sets
+    /// assert!(IecTimer::from_bytes(bytes).is_none());
+    /// ```
+    pub fn from_bytes(bytes: [u8; 16]) -> Option<IecTimer> {
+        let word =
+            |i: usize| u32::from_ne_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]]);
+        let t = IecTimerOf {
+            start: word(0),
+            pt: word(4),
+            et: word(8),
+            flags: bytes[12],
+        };
+        let valid =
+            bytes[13..] == [0, 0, 0] && t.flags & !flag::ALL == 0 && t.abstraction().is_valid();
+        valid.then_some(t)
+    }
+}
+
+impl<C: ClockWord> IecTimerOf<C> {
     /// The latched preset `PT` in milliseconds, as stored (no update).
     pub fn pt(&self) -> C {
         self.pt
@@ -255,7 +303,10 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline]
     fn read_q(&mut self, now: CpuTime) -> bool {
         if self.flags & flag::KIND_VALID != 0 {
-            self.update(now.clock(), usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+            self.update(
+                now.clock(),
+                usize::from((self.flags >> flag::KIND_SHIFT) & 0b11),
+            );
         }
         self.flags & flag::Q != 0
     }
@@ -263,7 +314,10 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline]
     fn read_et(&mut self, now: CpuTime) -> C {
         if self.flags & flag::KIND_VALID != 0 {
-            self.update(now.clock(), usize::from((self.flags >> flag::KIND_SHIFT) & 0b11));
+            self.update(
+                now.clock(),
+                usize::from((self.flags >> flag::KIND_SHIFT) & 0b11),
+            );
         }
         self.et
     }
