@@ -1,33 +1,36 @@
-//! Counter scenarios (seed 004; semantics brief §4): saturation at both ends for every type,
-//! priorities, the simultaneous-edge case, the R-released-with-CU-held case, and the S5
-//! counters. Reference and packed implementation run side by side.
+//! Counter scenarios (Strączyński lecture; TIA Portal help on CTUD and S_CU): saturation at
+//! both ends for every type, priorities, the simultaneous-edge case, the R-released-with-CU-held
+//! case, and the S5 counters with their STL operations. Reference and optimized implementations
+//! run side by side; the assertions are the source's sentence.
 
-use plc_timers::counter::packed::PackedCounter;
-use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterMemory, CounterPreset, CounterPresetError, S5CounterInput, S5CounterKind, S5CounterRef,
+    CounterMemory, CounterPreset, CounterPresetError, S5Counter, S5CounterInput, S5CounterKind,
+    S5CounterOps, S5CounterOutput, S5CounterRef, S5CounterState,
 };
-use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput};
+use plc_timers::counter::{
+    Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
+};
 
 struct Both<T> {
     kind: CounterKind,
     reference: CounterRef<T>,
-    packed: PackedCounter<T>,
+    optimized: Counter<T>,
 }
 
 impl<T: CounterInt> Both<T> {
     fn new(kind: CounterKind) -> Both<T> {
         Both {
             kind,
-            reference: CounterRef::new(kind),
-            packed: PackedCounter::new(),
+            reference: CounterRef::new(),
+            optimized: Counter::new(),
         }
     }
 
     fn call(&mut self, cu: bool, cd: bool, r: bool, ld: bool, pv: T) -> CounterOutput<T> {
         let input = CounterInput { cu, cd, r, ld, pv };
-        let a = self.reference.call(input);
-        assert_eq!(a, self.packed.call(self.kind, input));
+        let a = self.reference.call(self.kind, input);
+        assert_eq!(a, self.optimized.call(self.kind, input));
+        assert_eq!(self.reference.state(), self.optimized.state());
         a
     }
 
@@ -79,20 +82,20 @@ fn saturation_at_both_ends_for_every_type() {
     saturation::<u64>();
 }
 
-/// Seed 004, CTU: "if CU changes from 0 to 1, CTU counts up by 1; Q = 1 if CV >= PV" (the
+/// Strączyński lecture, CTU: "if CU changes from 0 to 1, CTU counts up by 1; Q = 1 if CV >= PV" (the
 /// lecture's diagram uses PV = 3). Counting goes on past PV (matiec stops at PV; this does not).
 #[test]
-fn ctu_seed004_counts_past_pv() {
+fn ctu_lecture_counts_past_pv() {
     let mut c = Both::<u16>::new(CounterKind::Ctu);
     assert!(!c.pulses_up(2, 3).qu);
     assert!(c.pulses_up(1, 3).qu);
     assert_eq!(c.pulses_up(2, 3).cv, 5);
 }
 
-/// Seed 004, CTD: "if LOAD changes from 0 to 1, PV is written to CV"; counting down to and past
+/// Strączyński lecture, CTD: "if LOAD changes from 0 to 1, PV is written to CV"; counting down to and past
 /// 0; Q = CV <= 0.
 #[test]
-fn ctd_seed004_load_and_count_down() {
+fn ctd_lecture_load_and_count_down() {
     let mut c = Both::<i16>::new(CounterKind::Ctd);
     assert_eq!(c.call(false, false, false, true, 2).cv, 2);
     assert!(!c.pulses_down(1, 2).qd);
@@ -161,13 +164,16 @@ fn unsigned_qd_at_zero() {
 #[test]
 fn s5_counters_saturate_and_set() {
     let pv = "C#998".parse::<CounterPreset>().expect("valid");
-    let mut c = S5CounterRef::new(S5CounterKind::SCud);
-    let mut area = CounterMemory::<4>::new();
+    let mut c = S5Both::new(S5CounterKind::SCud);
     let mut both = |cu, cd, s, r| {
-        let input = S5CounterInput { cu, cd, s, r, pv };
-        let a = c.call(input);
-        assert_eq!(Ok(a), area.call(2, S5CounterKind::SCud, input));
-        a
+        c.call(S5CounterInput {
+            cu,
+            cd,
+            s,
+            r,
+            fr: false,
+            pv,
+        })
     };
     assert_eq!(both(false, false, true, false).cv, 998);
     both(true, false, true, false);
@@ -271,10 +277,10 @@ fn s5_counter_presets() {
     );
 }
 
-/// The instruction names of seed 004 (CTU, CTD, CTUD) and the S5 counter boxes of the S7-300/400
-/// LAD manual (S_CU, S_CD, S_CUD; semantics brief §4), in that order.
+/// The instruction names of the Strączyński lecture (CTU, CTD, CTUD) and the S5 counter boxes of
+/// S7-300/400 (S_CU, S_CD, S_CUD; TIA Portal help), in that order.
 #[test]
-fn kind_names_seed004() {
+fn kind_names_lecture() {
     assert_eq!(
         CounterKind::ALL.map(CounterKind::name),
         ["CTU", "CTD", "CTUD"]
@@ -285,22 +291,171 @@ fn kind_names_seed004() {
     );
 }
 
-/// SC-RANGE-01: CV is 0..=999; a state outside is not a counter state, and the packed cell
-/// refuses it. A counter number outside the area is an error that names the valid range.
+/// SC-RANGE-01: CV is 0..=999; a state outside is not a counter state, and every type that holds
+/// a counter refuses it. A counter number outside the area is an error that names the valid range.
 #[test]
 fn s5_counter_state_range_and_numbers() {
-    use plc_timers::counter::s5::{S5CounterCell, S5CounterState};
     let at = |cv| S5CounterState {
         cv,
         ..S5CounterState::default()
     };
     assert!(at(0).is_valid() && at(999).is_valid());
     assert!(!at(1000).is_valid());
-    assert!(S5CounterCell::from_state(at(999)).is_some());
-    assert!(S5CounterCell::from_state(at(1000)).is_none());
+    assert!(S5Counter::from_state(at(999)).is_some());
+    assert!(S5Counter::from_state(at(1000)).is_none());
+    assert!(S5CounterRef::from_state(at(1000)).is_none());
+    assert!(
+        S5Counter::from_bits(0x0400).is_none(),
+        "bit 10 is not a field"
+    );
     let mut area = CounterMemory::<4>::new();
     let err = area
         .cu(4, true)
         .expect_err("C 4 does not exist in a 4-counter area");
     assert_eq!(err.to_string(), "no counter C 4: this area has C 0 to C 3");
+}
+
+/// The three forms of an S5 counter driven together: the reference, the lone word, and the box
+/// on a counter memory area; and a second area driven by the box's STL sequence (`FR`, `CU`,
+/// `CD`, `S`, `R` for the inputs the box has), which must give the same word.
+struct S5Both {
+    kind: S5CounterKind,
+    reference: S5CounterRef,
+    word: S5Counter,
+    area: CounterMemory<3>,
+    stl: CounterMemory<3>,
+}
+
+impl S5Both {
+    fn new(kind: S5CounterKind) -> S5Both {
+        S5Both {
+            kind,
+            reference: S5CounterRef::new(),
+            word: S5Counter::new(),
+            area: CounterMemory::new(),
+            stl: CounterMemory::new(),
+        }
+    }
+
+    fn call(&mut self, input: S5CounterInput) -> S5CounterOutput {
+        let a = self.reference.call(self.kind, input);
+        assert_eq!(self.word.call(self.kind, input), a, "word");
+        assert_eq!(self.area.call(2, self.kind, input), Ok(a), "area box");
+        let stl = &mut self.stl;
+        stl.fr(2, input.fr).expect("C 2");
+        if self.kind.counts_up() {
+            stl.cu(2, input.cu).expect("C 2");
+        }
+        if self.kind.counts_down() {
+            stl.cd(2, input.cd).expect("C 2");
+        }
+        stl.set(2, input.s, input.pv).expect("C 2");
+        stl.reset(2, input.r).expect("C 2");
+        assert_eq!(stl.get(2), Ok(self.reference.state()), "STL sequence");
+        assert_eq!(self.word.state(), self.reference.state(), "states");
+        a
+    }
+
+    fn state(&self) -> S5CounterState {
+        self.reference.state()
+    }
+}
+
+fn s5_input(cu: bool, cd: bool, pv: u16) -> S5CounterInput {
+    S5CounterInput {
+        cu,
+        cd,
+        pv: CounterPreset::new(pv).expect("0..=999"),
+        ..S5CounterInput::default()
+    }
+}
+
+/// SC-SIMUL-01 (LAD manual, S_CUD: "if both count inputs have a rising edge, both operations are
+/// executed"): the box counts up, then down, each saturating, as its STL sequence does. CV is
+/// unchanged in the middle; 999 becomes 998 (the count up saturates); 0 stays 0.
+#[test]
+fn s_cud_both_edges_execute_both_operations() {
+    for (start, expected) in [(0, 0), (1, 1), (500, 500), (998, 998), (999, 998)] {
+        let mut c = S5Both::new(S5CounterKind::SCud);
+        let set = S5CounterInput {
+            s: true,
+            ..s5_input(false, false, start)
+        };
+        c.call(set);
+        c.call(s5_input(false, false, start));
+        assert_eq!(
+            c.call(s5_input(true, true, start)).cv,
+            expected,
+            "from {start}"
+        );
+    }
+}
+
+/// SC-SET-01 (TIA Portal help, S_CU: "if the counter is set while CU is 1, it counts once in the
+/// next cycle"): setting clears the count edge memories.
+#[test]
+fn setting_with_cu_held_counts_once_next_call() {
+    let mut c = S5Both::new(S5CounterKind::SCu);
+    c.call(s5_input(true, false, 5));
+    assert_eq!(c.state().cv, 1);
+    let set = S5CounterInput {
+        s: true,
+        ..s5_input(true, false, 5)
+    };
+    assert_eq!(
+        c.call(set).cv,
+        5,
+        "the set overrides the count (SC-PRIO-01)"
+    );
+    let held = S5CounterInput {
+        s: true,
+        ..s5_input(true, false, 5)
+    };
+    assert_eq!(c.call(held).cv, 6, "CU held through the set counts once");
+    assert_eq!(c.call(held).cv, 6, "and only once");
+}
+
+/// SC-FR-01 (STL manual, FR C n): a rising FR clears the edge memories of CU, CD and S, so an
+/// input held at 1 acts once more; FR held at 1 does nothing further.
+#[test]
+fn fr_lets_held_inputs_act_again() {
+    let mut c = S5Both::new(S5CounterKind::SCud);
+    let held_cu = s5_input(true, false, 7);
+    c.call(held_cu);
+    assert_eq!(c.call(held_cu).cv, 1, "CU held: one count");
+    let fr = S5CounterInput {
+        fr: true,
+        ..held_cu
+    };
+    assert_eq!(c.call(fr).cv, 2, "FR edge: the held CU counts again");
+    assert_eq!(c.call(fr).cv, 2, "FR held: no further count");
+    let set_fr = S5CounterInput { s: true, ..fr };
+    assert_eq!(
+        c.call(set_fr).cv,
+        7,
+        "S rising: the set wins over the count"
+    );
+    assert_eq!(
+        c.call(held_cu).cv,
+        8,
+        "the set cleared CU's memory (SC-SET-01)"
+    );
+    assert_eq!(c.call(held_cu).cv, 8);
+    assert_eq!(c.call(fr).cv, 9, "a new FR edge: CU once more");
+}
+
+/// SC-INPUTS-01: S_CU has no CD input, so its box leaves the CD edge memory alone (an STL `CD`
+/// on the same counter still sees its own memory); likewise S_CD and CU.
+#[test]
+fn a_box_without_an_input_leaves_its_memory() {
+    let mut area = CounterMemory::<1>::new();
+    area.cd(0, true).expect("C 0");
+    let box_input = s5_input(false, false, 0);
+    area.call(0, S5CounterKind::SCu, box_input).expect("C 0");
+    assert!(
+        area.get(0).expect("C 0").cd_prev,
+        "S_CU did not touch CD's memory"
+    );
+    area.call(0, S5CounterKind::SCd, box_input).expect("C 0");
+    assert!(!area.get(0).expect("C 0").cd_prev, "S_CD did");
 }

@@ -1,15 +1,15 @@
-//! IEC timer scenarios from seed 001 (S7-1200 system manual) and seed 004: every row of the
+//! IEC timer scenarios from the S7-1200 manual and the Strączyński lecture: every row of the
 //! "change of PT / IN while running" table (Table 8-20), the clock wrap, negative and maximum PT,
 //! update-on-access, the RT and PT coils, retentivity, and the self-resetting-timer pitfall.
-//! Each runs the reference and the 16-byte structure side by side.
+//! Each runs the reference and the 16-byte structure side by side; the assertions are the
+//! manual's sentence.
 
-use plc_timers::iec::reference::Reference;
-use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps};
-use plc_timers::time::Time;
+use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::time::{CpuTime, Time};
 
 struct Both {
     kind: IecKind,
-    reference: Reference<u32>,
+    reference: IecTimerRef<u32>,
     structure: IecTimer,
 }
 
@@ -17,35 +17,40 @@ impl Both {
     fn new(kind: IecKind) -> Both {
         Both {
             kind,
-            reference: Reference::new(),
+            reference: IecTimerRef::new(),
             structure: IecTimer::new(),
         }
     }
 
+    /// A call at the 32-bit clock reading `now` (the CPU time's low 32 bits).
     fn call(&mut self, now: u32, input: bool, pt: i32) -> IecOutput {
         self.call_r(now, input, false, pt)
     }
 
     fn call_r(&mut self, now: u32, input: bool, reset: bool, pt: i32) -> IecOutput {
-        let i = IecInput {
-            input,
-            pt: Time::from_millis(pt),
-            reset,
-        };
+        self.call_at(u64::from(now), input, reset, pt)
+    }
+
+    /// A call at CPU time `t` ms (64-bit: for gaps past the 32-bit clock's wrap).
+    fn call_at(&mut self, t: u64, input: bool, reset: bool, pt: i32) -> IecOutput {
+        let i = IecInput::new(input, Time::from_millis(pt)).with_reset(reset);
+        let now = CpuTime::from_millis(t);
         let a = self.reference.call(self.kind, now, i);
         let b = self.structure.call(self.kind, now, i);
-        assert_eq!(a, b, "reference and structure differ at {now}");
-        assert_eq!(self.reference.state(), self.structure.abstraction());
+        assert_eq!(a, b, "reference and structure differ at {t}");
+        assert_eq!(self.reference.state(), self.structure.state());
         a
     }
 
     fn read_q(&mut self, now: u32) -> bool {
+        let now = CpuTime::from_millis(u64::from(now));
         let a = self.reference.read_q(now);
         assert_eq!(a, self.structure.read_q(now));
         a
     }
 
     fn read_et(&mut self, now: u32) -> u32 {
+        let now = CpuTime::from_millis(u64::from(now));
         let a = self.reference.read_et(now);
         assert_eq!(a, self.structure.read_et(now));
         a
@@ -63,7 +68,7 @@ fn out(q: bool, et: u32) -> IecOutput {
 
 /// Table 8-20, TP: "changing PT while the timer runs has no effect".
 #[test]
-fn tp_seed001_table_8_20_pt_change_no_effect() {
+fn tp_s7_1200_table_8_20_pt_change_no_effect() {
     let mut t = Both::new(IecKind::Tp);
     t.call(0, true, 100);
     assert_eq!(t.call(50, true, 10), out(true, 50), "PT 10 ignored");
@@ -72,7 +77,7 @@ fn tp_seed001_table_8_20_pt_change_no_effect() {
 
 /// Table 8-20, TP: "changing IN while the timer runs has no effect".
 #[test]
-fn tp_seed001_table_8_20_in_change_no_effect() {
+fn tp_s7_1200_table_8_20_in_change_no_effect() {
     let mut t = Both::new(IecKind::Tp);
     t.call(0, true, 100);
     assert_eq!(t.call(20, false, 100), out(true, 20));
@@ -84,9 +89,9 @@ fn tp_seed001_table_8_20_in_change_no_effect() {
     assert_eq!(t.call(100, true, 100), out(false, 100));
 }
 
-/// Brief §3 / seed 004: TP's ET stays at PT while IN = 1 after the pulse, 0 once IN = 0.
+/// Brief §3 / Strączyński lecture: TP's ET stays at PT while IN = 1 after the pulse, 0 once IN = 0.
 #[test]
-fn tp_seed004_et_after_pulse() {
+fn tp_lecture_et_after_pulse() {
     let mut t = Both::new(IecKind::Tp);
     t.call(0, true, 100);
     assert_eq!(t.call(500, true, 100), out(false, 100));
@@ -95,7 +100,7 @@ fn tp_seed004_et_after_pulse() {
 
 /// Table 8-20, TON: "changing PT while the timer runs has no effect".
 #[test]
-fn ton_seed001_table_8_20_pt_change_no_effect() {
+fn ton_s7_1200_table_8_20_pt_change_no_effect() {
     let mut t = Both::new(IecKind::Ton);
     t.call(0, true, 100);
     assert_eq!(
@@ -108,7 +113,7 @@ fn ton_seed001_table_8_20_pt_change_no_effect() {
 
 /// Table 8-20, TON: "changing IN to FALSE while the timer runs resets and stops it".
 #[test]
-fn ton_seed001_table_8_20_in_false_resets() {
+fn ton_s7_1200_table_8_20_in_false_resets() {
     let mut t = Both::new(IecKind::Ton);
     t.call(0, true, 100);
     assert_eq!(t.call(60, false, 100), out(false, 0));
@@ -123,7 +128,7 @@ fn ton_seed001_table_8_20_in_false_resets() {
 
 /// Table 8-20, TOF: "changing PT while the timer runs has no effect".
 #[test]
-fn tof_seed001_table_8_20_pt_change_no_effect() {
+fn tof_s7_1200_table_8_20_pt_change_no_effect() {
     let mut t = Both::new(IecKind::Tof);
     t.call(0, true, 100);
     t.call(10, false, 100);
@@ -133,7 +138,7 @@ fn tof_seed001_table_8_20_pt_change_no_effect() {
 
 /// Table 8-20, TOF: "changing IN to TRUE while the timer runs resets and stops it".
 #[test]
-fn tof_seed001_table_8_20_in_true_resets() {
+fn tof_s7_1200_table_8_20_in_true_resets() {
     let mut t = Both::new(IecKind::Tof);
     t.call(0, true, 100);
     t.call(10, false, 100);
@@ -153,7 +158,7 @@ fn tof_seed001_table_8_20_in_true_resets() {
 
 /// Table 8-20, TONR: "changing PT has no effect while running, but when the timer resumes".
 #[test]
-fn tonr_seed001_table_8_20_pt_on_resume() {
+fn tonr_s7_1200_table_8_20_pt_on_resume() {
     let mut t = Both::new(IecKind::Tonr);
     t.call(0, true, 100);
     assert_eq!(
@@ -172,7 +177,7 @@ fn tonr_seed001_table_8_20_pt_on_resume() {
 /// Table 8-20, TONR: "IN to FALSE stops without reset; IN back to TRUE continues from the
 /// accumulated time".
 #[test]
-fn tonr_seed001_table_8_20_accumulates() {
+fn tonr_s7_1200_table_8_20_accumulates() {
     let mut t = Both::new(IecKind::Tonr);
     t.call(0, true, 100);
     assert_eq!(t.call(30, false, 100), out(false, 30));
@@ -189,7 +194,7 @@ fn tonr_seed001_table_8_20_accumulates() {
 
 /// Table 8-19, TONR's R: "1 = reset the elapsed time and the Q bit to 0".
 #[test]
-fn tonr_seed001_table_8_19_r_resets() {
+fn tonr_s7_1200_table_8_19_r_resets() {
     let mut t = Both::new(IecKind::Tonr);
     t.call(0, true, 100);
     t.call(100, true, 100);
@@ -202,10 +207,10 @@ fn tonr_seed001_table_8_19_r_resets() {
     assert_eq!(t.call(220, true, 100), out(true, 100));
 }
 
-/// IEC-WRAP-01 (seed 001: START is subtracted from the CPU timer's current value): a TON started
+/// IEC-WRAP-01 (S7-1200 manual: START is subtracted from the CPU timer's current value): a TON started
 /// 100 ms before the 32-bit millisecond clock wraps expires 400 ms after the wrap.
 #[test]
-fn ton_clock_wrap_seed001() {
+fn ton_clock_wrap_s7_1200() {
     let mut t = Both::new(IecKind::Ton);
     let start = u32::MAX - 99;
     t.call(start, true, 500);
@@ -224,10 +229,10 @@ fn tp_clock_wrap_pulse_spans_the_wrap() {
     assert_eq!(t.call(39, true, 50), out(false, 50));
 }
 
-/// Seed 001, Table 8-21 note: "a negative PT is set to 0 when the timer instruction executes;
+/// S7-1200 manual, Table 8-21 note: "a negative PT is set to 0 when the timer instruction executes;
 /// ET is always positive".
 #[test]
-fn negative_pt_seed001_table_8_21_taken_as_zero() {
+fn negative_pt_s7_1200_table_8_21_taken_as_zero() {
     let mut ton = Both::new(IecKind::Ton);
     assert_eq!(
         ton.call(5, true, -1000),
@@ -249,9 +254,9 @@ fn negative_pt_seed001_table_8_21_taken_as_zero() {
     );
 }
 
-/// The maximum PT, T#24d_20h_31m_23s_647ms (seed 001 Table 8-21), across the clock wrap.
+/// The maximum PT, T#24d_20h_31m_23s_647ms (S7-1200 manual Table 8-21), across the clock wrap.
 #[test]
-fn maximum_pt_seed001_table_8_21() {
+fn maximum_pt_s7_1200_table_8_21() {
     let pt = "T#24d_20h_31m_23s_647ms"
         .parse::<Time>()
         .expect("valid")
@@ -263,10 +268,10 @@ fn maximum_pt_seed001_table_8_21() {
     assert_eq!(t.call(end, true, pt), out(true, i32::MAX as u32));
 }
 
-/// Seed 001 "Timer operation": an update happens only when the instruction executes or Q or
+/// S7-1200 manual "Timer operation": an update happens only when the instruction executes or Q or
 /// ELAPSED is read through the structure; a read updates (IEC-ACCESS-01).
 #[test]
-fn update_on_access_seed001() {
+fn update_on_access_s7_1200() {
     let mut t = Both::new(IecKind::Ton);
     t.call(0, true, 100);
     assert_eq!(t.structure.et(), 0, "no update without an access");
@@ -279,12 +284,12 @@ fn update_on_access_seed001() {
     assert_eq!(t.structure.et(), 100);
 }
 
-/// Seed 001 "Timer programming", the self-resetting timer: a normally-closed contact on the
+/// S7-1200 manual "Timer programming", the self-resetting timer: a normally-closed contact on the
 /// structure's Q in front of the timer reads Q (an update), so the timer is restarted in the same
 /// scan it expires and the Q output is never seen 1; the remedy, a contact on a variable written
 /// by the box's Q output, gives one scan with Q = 1.
 #[test]
-fn self_resetting_timer_pitfall_seed001() {
+fn self_resetting_timer_pitfall_s7_1200() {
     let pt = 100;
     // The pitfall: IN = NOT "DB".Q, read through the structure just before the call.
     let mut t = Both::new(IecKind::Ton);
@@ -316,7 +321,7 @@ fn self_resetting_timer_pitfall_seed001() {
 
 /// IEC-RT-01: the RT coil zeroes the timer data; a TON with IN still 1 starts again from 0.
 #[test]
-fn rt_coil_seed004_restarts_ton() {
+fn rt_coil_lecture_restarts_ton() {
     let mut t = Both::new(IecKind::Ton);
     t.call(0, true, 100);
     t.call(150, true, 100);
@@ -358,9 +363,9 @@ fn pt_coil_loads_preset() {
     );
 }
 
-/// Seed 001 "Retaining timer data": data is lost on RUN-STOP-RUN unless retentive.
+/// S7-1200 manual "Retaining timer data": data is lost on RUN-STOP-RUN unless retentive.
 #[test]
-fn retentivity_seed001_run_stop_run() {
+fn retentivity_s7_1200_run_stop_run() {
     for retentive in [false, true] {
         let mut t = Both::new(IecKind::Tonr);
         t.call(0, true, 100);
@@ -378,20 +383,20 @@ fn retentivity_seed001_run_stop_run() {
 
 /// The structure is the manual's 16 bytes.
 #[test]
-fn iec_timer_is_16_bytes_seed001() {
+fn iec_timer_is_16_bytes_s7_1200() {
     assert_eq!(std::mem::size_of::<IecTimer>(), 16);
 }
 
-/// The instruction names of seed 001 (TP, TON, TOF, TONR), in the manual's order.
+/// The instruction names of S7-1200 manual (TP, TON, TOF, TONR), in the manual's order.
 #[test]
-fn kind_names_seed001() {
+fn kind_names_s7_1200() {
     assert_eq!(
         IecKind::ALL.map(IecKind::name),
         ["TP", "TON", "TOF", "TONR"]
     );
 }
 
-/// The state invariant: ET never exceeds the latched PT (seed 001: ET runs from 0 to PT), and a
+/// The state invariant: ET never exceeds the latched PT (S7-1200 manual: ET runs from 0 to PT), and a
 /// stopped timer keeps no START; the 16-byte structure refuses any other state.
 #[test]
 fn state_validity_et_within_pt() {
@@ -417,31 +422,98 @@ fn state_validity_et_within_pt() {
 }
 
 /// A structure restored from raw bytes (retentive memory, an area shared with another runtime)
-/// can hold what no operation produces; `is_valid` tells: no flag bit outside IN (bit 0), Q (1),
-/// RUNNING (2), the kind (4-5) and its valid bit (6); ET within PT; no START while stopped.
+/// can hold what no operation produces; `from_bytes` refuses it: a flag bit outside IN (bit 0),
+/// Q (1), RUNNING (2), the kind (4-5) and its valid bit (6); ET above PT; START kept while
+/// stopped; non-zero padding.
 #[test]
 fn structure_validity_from_raw_bytes() {
-    let raw = |start: u32, pt: u32, et: u32, flags: u8| -> IecTimer {
+    let raw = |start: u32, pt: u32, et: u32, flags: u8| -> Option<IecTimer> {
         let mut bytes = [0u8; 16];
         bytes[0..4].copy_from_slice(&start.to_ne_bytes());
         bytes[4..8].copy_from_slice(&pt.to_ne_bytes());
         bytes[8..12].copy_from_slice(&et.to_ne_bytes());
         bytes[12] = flags;
-        // SAFETY: `IecTimer` is `#[repr(C)]` { u32, u32, u32, u8 } plus three bytes of padding,
-        // 16 bytes in all (asserted at compile time in src/iec/structure.rs); every field
-        // accepts any bit pattern, so any 16 bytes are a value of the type.
-        unsafe { core::mem::transmute::<[u8; 16], IecTimer>(bytes) }
+        IecTimer::from_bytes(bytes)
     };
-    assert!(
-        raw(0, 500, 500, 0b0101_0010).is_valid(),
-        "TON expired: Q, kind TON"
+    let expired_ton = raw(0, 500, 500, 0b0101_0010).expect("TON expired: Q, kind TON");
+    assert!(expired_ton.state().q && expired_ton.pt() == 500);
+    let running_tp = raw(7, 500, 0, 0b0100_0101).expect("TP running with START");
+    assert_eq!(running_tp.state().start, 7);
+    assert!(raw(0, 500, 500, 0x80).is_none(), "stray bit 7");
+    assert!(raw(0, 500, 501, 0).is_none(), "ET above PT");
+    assert!(raw(7, 500, 0, 0).is_none(), "START kept while stopped");
+    let mut padded = running_tp.to_bytes();
+    padded[15] = 1;
+    assert!(IecTimer::from_bytes(padded).is_none(), "non-zero padding");
+}
+
+/// IEC-WRAP-01: gaps between two updates of 2^31 ms and more (but below 2^32 ms) give the exact
+/// elapsed time on the wrapping 32-bit clock; a gap of exactly 2^32 ms looks like no time at all.
+#[test]
+fn gaps_past_2_pow_31_ms() {
+    let max = i32::MAX; // the largest PT, 2^31 - 1 ms
+    let mut t = Both::new(IecKind::Ton);
+    let start = 5_000_000_000u64; // the 32-bit clock has wrapped once already
+    t.call_at(start, true, false, max);
+    let o = t.call_at(start + (1 << 31) - 2, true, false, max);
+    assert_eq!(o, out(false, max as u32 - 1), "2^31 - 2 ms: one ms short");
+    let o = t.call_at(start + (1 << 31) + 5, true, false, max);
+    assert_eq!(
+        o,
+        out(true, max as u32),
+        "a gap past 2^31 ms: expired, ET = PT"
     );
-    assert!(
-        raw(7, 500, 0, 0b0100_0101).is_valid(),
-        "TP running with START"
+    let mut t = Both::new(IecKind::Ton);
+    t.call_at(start, true, false, 1_000);
+    let o = t.call_at(start + (1 << 32), true, false, 1_000);
+    assert_eq!(
+        o,
+        out(false, 0),
+        "a gap of 2^32 ms aliases to 0 (IEC-WRAP-01)"
     );
-    assert!(!raw(0, 500, 500, 0x80).is_valid(), "stray bit 7");
-    assert!(!raw(0, 500, 501, 0).is_valid(), "ET above PT");
-    assert!(!raw(7, 500, 0, 0).is_valid(), "START kept while stopped");
-    assert_eq!(raw(7, 500, 0, 0b0100_0101).pt(), 500);
+}
+
+/// TP-RETRIGGER-01: a rising IN in the call where the pulse runs out starts the next pulse (the
+/// update comes first and ends the pulse, then the edge starts one).
+#[test]
+fn tp_rising_in_at_expiry_starts_a_new_pulse() {
+    let mut t = Both::new(IecKind::Tp);
+    t.call(0, true, 100);
+    t.call(50, false, 100);
+    assert_eq!(
+        t.call(100, true, 100),
+        out(true, 0),
+        "new pulse at the expiring call"
+    );
+    assert_eq!(t.call(199, true, 100), out(true, 99));
+    assert_eq!(t.call(200, true, 100), out(false, 100));
+}
+
+/// IEC-PT0-01: with PT = 0 the starting call updates: TON is on at once, TP gives no pulse, TOF
+/// is off in the call of the falling edge.
+#[test]
+fn pt_zero_takes_effect_in_the_starting_call() {
+    let mut ton = Both::new(IecKind::Ton);
+    assert_eq!(ton.call(10, true, 0), out(true, 0));
+    let mut tp = Both::new(IecKind::Tp);
+    assert_eq!(tp.call(10, true, 0), out(false, 0));
+    let mut tof = Both::new(IecKind::Tof);
+    assert!(tof.call(10, true, 0).q);
+    assert_eq!(tof.call(20, false, 0), out(false, 0));
+}
+
+/// IEC-EXPIRY-01: Q changes in the call where ET reaches PT exactly (ET >= PT), for TON, TP and
+/// TOF, never one call later.
+#[test]
+fn expiry_at_et_equal_pt() {
+    let mut ton = Both::new(IecKind::Ton);
+    ton.call(0, true, 100);
+    assert_eq!(ton.call(100, true, 100), out(true, 100));
+    let mut tp = Both::new(IecKind::Tp);
+    tp.call(0, true, 100);
+    assert_eq!(tp.call(100, true, 100), out(false, 100));
+    let mut tof = Both::new(IecKind::Tof);
+    tof.call(0, true, 100);
+    tof.call(0, false, 100);
+    assert_eq!(tof.call(100, false, 100), out(false, 100));
 }

@@ -1,16 +1,20 @@
-//! S5 timer scenarios, one per sentence of the manuals (seed 000 §9.1-9.7, seed 003 §7). Each
-//! scenario runs the reference and the timer memory area side by side and checks both.
+//! S5 timer scenarios, one per sentence of the manuals (LAD manual §9.1-9.7, Berger §7). Each
+//! scenario runs the reference, the lone optimized timer, the timer memory area's box and the
+//! area's STL sequence (`FR`, start, `R`, then `A`, `L`, `LC`) side by side and checks that all
+//! four agree; the assertions are the manual's sentence.
 
-use plc_timers::s5::memory::TimerMemory;
-use plc_timers::s5::reference::S5TimerRef;
-use plc_timers::s5::{S5Input, S5Kind, S5Output};
-use plc_timers::time::{S5Time, TimeBase};
+use plc_timers::s5::{
+    S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerMemory, TimerWord,
+};
+use plc_timers::time::{CpuTime, S5Time, TimeBase};
 
-/// A reference timer and a one-timer area driven together.
+/// The four forms of one timer, driven together.
 struct Both {
     kind: S5Kind,
     reference: S5TimerRef,
+    lone: S5Timer,
     area: TimerMemory<1>,
+    stl: TimerMemory<1>,
     tv: S5Time,
 }
 
@@ -19,27 +23,45 @@ impl Both {
         let tv = tv.parse().expect("valid TV literal");
         Both {
             kind,
-            reference: S5TimerRef::new(kind),
+            reference: S5TimerRef::new(),
+            lone: S5Timer::new(),
             area: TimerMemory::new(),
+            stl: TimerMemory::new(),
             tv,
         }
     }
 
-    /// Executes at `t` with S, R (FR = 0); asserts both implementations agree.
+    /// Executes at `t` ms with S, R (FR = 0); asserts all four implementations agree.
     fn at(&mut self, t: u64, s: bool, r: bool) -> S5Output {
         self.with_fr(t, s, r, false)
     }
 
     fn with_fr(&mut self, t: u64, s: bool, r: bool, fr: bool) -> S5Output {
-        let input = S5Input {
-            s,
-            r,
-            fr,
-            tv: self.tv,
-        };
-        let a = self.reference.call(t, input);
-        let b = self.area.call(0, self.kind, t, input).expect("timer 0");
-        assert_eq!(a, b, "reference and optimized differ at t = {t}");
+        let input = S5Input::new(s, r, self.tv).with_fr(fr);
+        let now = CpuTime::from_millis(t);
+        let a = self.reference.call(self.kind, now, input);
+        assert_eq!(
+            self.lone.call(self.kind, now, input),
+            a,
+            "S5Timer at t = {t}"
+        );
+        let b = self.area.call(0, self.kind, now, input).expect("timer 0");
+        assert_eq!(b, a, "timer memory box at t = {t}");
+        self.stl.advance_to(now);
+        self.stl.fr(0, fr).expect("T 0");
+        self.stl.start(0, self.kind, s, self.tv).expect("T 0");
+        self.stl.reset(0, r).expect("T 0");
+        let read = (self.stl.status(0), self.stl.load(0), self.stl.load_bcd(0));
+        assert_eq!(
+            read,
+            (Ok(a.q), Ok(a.bi), Ok(a.bcd)),
+            "STL sequence at t = {t}"
+        );
+        assert_eq!(
+            self.reference.state(),
+            self.lone.state(),
+            "states at t = {t}"
+        );
         a
     }
 }
@@ -47,7 +69,7 @@ impl Both {
 /// §9.3: "starts the timer when S has a rising edge … runs with the value at TV as long as S = 1
 /// … while the timer runs, Q = 1".
 #[test]
-fn s_pulse_seed000_9_3_runs_while_s_and_q_is_1() {
+fn s_pulse_lad_9_3_runs_while_s_and_q_is_1() {
     let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
     assert!(t.at(0, true, false).q);
     let o = t.at(30, true, false);
@@ -57,7 +79,7 @@ fn s_pulse_seed000_9_3_runs_while_s_and_q_is_1() {
 
 /// §9.3: "if S changes from 1 to 0 before the time has elapsed, the timer stops; Q = 0".
 #[test]
-fn s_pulse_seed000_9_3_s_falling_stops() {
+fn s_pulse_lad_9_3_s_falling_stops() {
     let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
     t.at(0, true, false);
     let o = t.at(20, false, false);
@@ -72,7 +94,7 @@ fn s_pulse_seed000_9_3_s_falling_stops() {
 /// §9.3: "a change of signal state is always required to enable the timer": S held at 1 after
 /// the pulse does not start it again.
 #[test]
-fn s_pulse_seed000_9_3_needs_signal_change() {
+fn s_pulse_lad_9_3_needs_signal_change() {
     let mut t = Both::new(S5Kind::SPulse, "S5T#20MS");
     t.at(0, true, false);
     assert!(!t.at(20, true, false).q);
@@ -84,7 +106,7 @@ fn s_pulse_seed000_9_3_needs_signal_change() {
 /// §9.3: "the timer is reset if R changes from 0 to 1 while the timer runs; the time value and
 /// the time base are also reset to zero".
 #[test]
-fn s_pulse_seed000_9_3_reset_while_running_clears_value_and_base() {
+fn s_pulse_lad_9_3_reset_while_running_clears_value_and_base() {
     let mut t = Both::new(S5Kind::SPulse, "S5T#5S"); // 500 x 10 ms
     t.at(0, true, false);
     let o = t.at(10, true, true);
@@ -100,7 +122,7 @@ fn s_pulse_seed000_9_3_reset_while_running_clears_value_and_base() {
 
 /// §9.3: "R = 1 has no effect if the timer is not running": Q stays 0 and a later start works.
 #[test]
-fn s_pulse_seed000_9_3_reset_while_stopped_no_effect_on_q() {
+fn s_pulse_lad_9_3_reset_while_stopped_no_effect_on_q() {
     let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
     assert!(!t.at(0, false, true).q);
     assert!(t.at(10, true, false).q);
@@ -108,7 +130,7 @@ fn s_pulse_seed000_9_3_reset_while_stopped_no_effect_on_q() {
 
 /// §9.4: "the timer keeps running … even if S changes to 0 before the time has elapsed".
 #[test]
-fn s_pext_seed000_9_4_runs_on_when_s_falls() {
+fn s_pext_lad_9_4_runs_on_when_s_falls() {
     let mut t = Both::new(S5Kind::SPext, "S5T#50MS");
     t.at(0, true, false);
     assert!(t.at(10, false, false).q);
@@ -119,7 +141,7 @@ fn s_pext_seed000_9_4_runs_on_when_s_falls() {
 /// §9.4: "the timer is restarted with the programmed value if S changes from 0 to 1 while the
 /// timer runs".
 #[test]
-fn s_pext_seed000_9_4_retriggers() {
+fn s_pext_lad_9_4_retriggers() {
     let mut t = Both::new(S5Kind::SPext, "S5T#50MS");
     t.at(0, true, false);
     t.at(10, false, false);
@@ -131,7 +153,7 @@ fn s_pext_seed000_9_4_retriggers() {
 
 /// §9.4: R while running resets it, value and base cleared.
 #[test]
-fn s_pext_seed000_9_4_reset() {
+fn s_pext_lad_9_4_reset() {
     let mut t = Both::new(S5Kind::SPext, "S5T#1M"); // 600 x 100 ms
     t.at(0, true, false);
     assert_eq!(
@@ -146,7 +168,7 @@ fn s_pext_seed000_9_4_reset() {
 
 /// §9.5: "Q = 1 when the time has elapsed without error, S is still 1 and R stays 0".
 #[test]
-fn s_odt_seed000_9_5_q_after_time_while_s() {
+fn s_odt_lad_9_5_q_after_time_while_s() {
     let mut t = Both::new(S5Kind::SOdt, "S5T#50MS");
     assert!(!t.at(0, true, false).q);
     assert!(!t.at(40, true, false).q);
@@ -157,7 +179,7 @@ fn s_odt_seed000_9_5_q_after_time_while_s() {
 
 /// §9.5: "if S changes from 1 to 0 while the timer runs, it stops; Q = 0".
 #[test]
-fn s_odt_seed000_9_5_s_falling_stops() {
+fn s_odt_lad_9_5_s_falling_stops() {
     let mut t = Both::new(S5Kind::SOdt, "S5T#50MS");
     t.at(0, true, false);
     assert!(!t.at(20, false, false).q);
@@ -166,7 +188,7 @@ fn s_odt_seed000_9_5_s_falling_stops() {
 
 /// §9.5: "the timer is also reset if R = 1 while the timer is not running" (clears an expired Q).
 #[test]
-fn s_odt_seed000_9_5_reset_when_not_running() {
+fn s_odt_lad_9_5_reset_when_not_running() {
     let mut t = Both::new(S5Kind::SOdt, "S5T#20MS");
     t.at(0, true, false);
     assert!(t.at(20, true, false).q);
@@ -190,7 +212,7 @@ fn s_odt_restart_after_expiry_needs_new_edge() {
 
 /// §9.6: "Q = 1 after the time has elapsed, whatever S does, as long as R stays 0".
 #[test]
-fn s_odts_seed000_9_6_q_latched_until_r() {
+fn s_odts_lad_9_6_q_latched_until_r() {
     let mut t = Both::new(S5Kind::SOdts, "S5T#30MS");
     t.at(0, true, false);
     t.at(10, false, false);
@@ -201,7 +223,7 @@ fn s_odts_seed000_9_6_q_latched_until_r() {
 
 /// §9.6: "if S changes from 0 to 1 while the timer runs, it restarts with the programmed value".
 #[test]
-fn s_odts_seed000_9_6_retriggers() {
+fn s_odts_lad_9_6_retriggers() {
     let mut t = Both::new(S5Kind::SOdts, "S5T#30MS");
     t.at(0, true, false);
     t.at(10, false, false);
@@ -211,9 +233,25 @@ fn s_odts_seed000_9_6_retriggers() {
     assert!(t.at(50, true, false).q);
 }
 
+/// §9.6: "Q = 1 after the time has run out, whatever S does, as long as R stays 0": a rising S
+/// after the end restarts the time (BI counts down again), and Q stays 1 (SS-Q-01).
+#[test]
+fn s_odts_lad_9_6_restart_after_expiry_keeps_q() {
+    let mut t = Both::new(S5Kind::SOdts, "S5T#30MS");
+    t.at(0, true, false);
+    assert!(t.at(30, true, false).q, "run out: Q = 1");
+    t.at(40, false, false);
+    let o = t.at(50, true, false);
+    assert_eq!((o.q, o.bi), (true, 3), "restarted with TV, Q still 1");
+    assert_eq!(t.at(70, true, false).bi, 1);
+    let o = t.at(80, true, false);
+    assert_eq!((o.q, o.bi), (true, 0), "run out again, Q still 1");
+    assert!(!t.at(90, true, true).q, "only R clears it");
+}
+
 /// §9.6: R resets "regardless of the RLO at S" (S = 1 held).
 #[test]
-fn s_odts_seed000_9_6_reset_with_s_held() {
+fn s_odts_lad_9_6_reset_with_s_held() {
     let mut t = Both::new(S5Kind::SOdts, "S5T#20MS");
     t.at(0, true, false);
     assert!(t.at(20, true, false).q);
@@ -229,7 +267,7 @@ fn s_odts_seed000_9_6_reset_with_s_held() {
 
 /// §9.7: "starts on a falling edge at S … Q = 1 if S = 1 or the timer runs".
 #[test]
-fn s_offdt_seed000_9_7_falling_edge_and_q() {
+fn s_offdt_lad_9_7_falling_edge_and_q() {
     let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
     assert!(!t.at(0, false, false).q, "S never 1, never started");
     assert!(t.at(5, true, false).q, "Q = 1 while S = 1");
@@ -242,7 +280,7 @@ fn s_offdt_seed000_9_7_falling_edge_and_q() {
 /// §9.7: "the timer is reset if S changes from 0 to 1 while it runs; it starts again only when S
 /// changes from 1 to 0".
 #[test]
-fn s_offdt_seed000_9_7_rising_s_while_running_stops() {
+fn s_offdt_lad_9_7_rising_s_while_running_stops() {
     let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
     t.at(0, true, false);
     t.at(5, false, false);
@@ -256,7 +294,8 @@ fn s_offdt_seed000_9_7_rising_s_while_running_stops() {
     assert!(!t.at(140, false, false).q);
 }
 
-/// §9.7 with decision SF-R-01: R while running resets; with S = 1, Q is 0 only while R = 1.
+/// §9.7 with Berger §7.1.3 and decision SF-Q-01: R while running resets; Q is the status bit
+/// that the edges of S set, so after R with S held it stays 0 until S changes.
 #[test]
 fn s_offdt_reset_and_s_held() {
     let mut t = Both::new(S5Kind::SOffdt, "S5T#30MS");
@@ -266,14 +305,24 @@ fn s_offdt_reset_and_s_held() {
     assert!(!t.at(100, false, false).q, "reset: no time left");
     assert!(
         !t.at(110, true, true).q,
-        "R = 1 holds Q at 0 even with S = 1 (seed 003 §7.1.3)"
+        "R = 1 holds Q at 0 even with S rising (Berger §7.1.3)"
     );
-    assert!(t.at(120, true, false).q, "R released, S = 1: Q = 1");
+    assert!(
+        !t.at(120, true, false).q,
+        "R released, S held: no edge, Q stays 0"
+    );
+    let o = t.at(130, false, false);
+    assert_eq!(
+        (o.q, o.bi),
+        (true, 3),
+        "the next falling S starts the off-delay"
+    );
+    assert!(t.at(140, true, false).q, "and a rising S sets Q");
 }
 
-/// Seed 003 §7.1.3: "while the RLO at R T n is 1, a check of the timer for 1 gives 0".
+/// Berger §7.1.3: "while the RLO at R T n is 1, a check of the timer for 1 gives 0".
 #[test]
-fn r_level_seed003_7_1_3_holds_q_at_zero() {
+fn r_level_berger_7_1_3_holds_q_at_zero() {
     for kind in S5Kind::ALL {
         let mut t = Both::new(kind, "S5T#20MS");
         for (time, s) in [(0, true), (10, false), (20, true), (30, true), (40, false)] {
@@ -282,10 +331,10 @@ fn r_level_seed003_7_1_3_holds_q_at_zero() {
     }
 }
 
-/// Seed 003 §7: "if the time value is 0, the timer stays active until the CPU, processing the
+/// Berger §7: "if the time value is 0, the timer stays active until the CPU, processing the
 /// timer, finds the time elapsed": active in the starting execution, run out at the next.
 #[test]
-fn value_zero_seed003_7_active_until_next_processing() {
+fn value_zero_berger_7_active_until_next_processing() {
     let mut sp = Both::new(S5Kind::SPulse, "S5T#0MS");
     assert!(sp.at(0, true, false).q, "active in the starting call");
     assert!(
@@ -297,10 +346,10 @@ fn value_zero_seed003_7_active_until_next_processing() {
     assert!(sd.at(0, true, false).q);
 }
 
-/// Seed 000 §9.1: the OS decrements the value by one unit per interval of the base: every base,
+/// LAD manual §9.1: the OS decrements the value by one unit per interval of the base: every base,
 /// BI after each tick, and expiry exactly on the v-th tick after the start (S5TMR-TICK-01).
 #[test]
-fn time_base_model_seed000_9_1_all_bases() {
+fn time_base_model_lad_9_1_all_bases() {
     for (tv, base) in [
         ("W#16#0003", TimeBase::Ms10),
         ("W#16#1003", TimeBase::Ms100),
@@ -327,7 +376,7 @@ fn time_base_model_seed000_9_1_all_bases() {
 
 /// A 1 s base run to expiry: S5T#2M7S = W#16#2127 (Fig. 9-1), 127 ticks of 1 s.
 #[test]
-fn one_second_base_seed000_fig_9_1_runs_to_expiry() {
+fn one_second_base_lad_fig_9_1_runs_to_expiry() {
     let mut t = Both::new(S5Kind::SPulse, "W#16#2127");
     let o = t.at(0, true, false);
     assert_eq!((o.q, o.bi, o.bcd), (true, 127, 0x2127));
@@ -360,13 +409,75 @@ fn fr_enable_restarts_without_s_edge() {
     );
 }
 
+/// S5TMR-FR-01 and SP-Q-01 (STL manual, FR: "an enable restarts a running timer if the start
+/// operation is processed with RLO = 1"): a rising FR with S held restarts a running S_PULSE
+/// with its full value, as it does every other kind.
+#[test]
+fn fr_restarts_a_running_s_pulse() {
+    let mut t = Both::new(S5Kind::SPulse, "S5T#50MS");
+    t.at(0, true, false);
+    let o = t.at(30, true, false);
+    assert_eq!((o.q, o.bi), (true, 2));
+    let o = t.with_fr(31, true, false, true);
+    assert_eq!((o.q, o.bi), (true, 5), "FR edge, S = 1: restarted with TV");
+    assert!(
+        t.at(79, true, false).q,
+        "the restarted pulse runs its full time"
+    );
+    assert!(!t.at(80, true, false).q);
+}
+
+/// S5TMR-FR-01: FR only clears the start edge memory. An S_OFFDT whose off-delay has run out
+/// with S = 0 is not restarted by an FR edge (it starts on a falling S, which a cleared memory
+/// cannot give); with S = 1 FR changes nothing visible either.
+#[test]
+fn fr_does_not_restart_an_expired_s_offdt() {
+    let mut t = Both::new(S5Kind::SOffdt, "S5T#20MS");
+    t.at(0, true, false);
+    t.at(5, false, false);
+    assert!(!t.at(20, false, false).q, "the off-delay has run out");
+    let o = t.with_fr(30, false, false, true);
+    assert_eq!(
+        (o.q, o.bi),
+        (false, 0),
+        "FR edge with S = 0: nothing starts"
+    );
+    assert!(!t.at(100, false, false).q);
+    let o = t.with_fr(110, true, false, false);
+    assert!(o.q, "a rising S sets Q");
+    t.with_fr(120, true, false, false);
+    let o = t.with_fr(130, true, false, true);
+    assert_eq!(
+        (o.q, o.bi),
+        (true, 0),
+        "FR edge with S = 1: Q stays, nothing runs"
+    );
+    assert_eq!(
+        t.at(140, false, false).bi,
+        2,
+        "the next falling S starts it"
+    );
+}
+
+/// SD-Q-01 with S5TMR-FR-01: an FR edge with S held restarts an S_ODT that has run out; Q = 0
+/// again until the new time runs out (§9.5: Q = 1 only when the time has run out).
+#[test]
+fn fr_restarts_an_expired_s_odt_with_q_0() {
+    let mut t = Both::new(S5Kind::SOdt, "S5T#20MS");
+    t.at(0, true, false);
+    assert!(t.at(20, true, false).q);
+    let o = t.with_fr(25, true, false, true);
+    assert_eq!((o.q, o.bi), (false, 2), "restarted: running, Q = 0");
+    assert!(t.at(40, true, false).q);
+}
+
 /// STL operations on the area (`L T`, `LC T`, `A T`) and R clearing value and base for L/LC.
 #[test]
 fn stl_operations_load_and_status() {
     let mut area = TimerMemory::<256>::new();
     let tv: S5Time = "W#16#2127".parse().expect("valid");
     area.start(7, S5Kind::SOdt, true, tv).expect("T 7");
-    area.advance_to(3_000);
+    area.advance_to(CpuTime::from_millis(3_000));
     assert_eq!(area.load(7), Ok(124));
     assert_eq!(area.load_bcd(7), Ok(0x2124));
     assert_eq!(area.status(7), Ok(false));
@@ -384,13 +495,13 @@ fn stl_operations_load_and_status() {
         "no timer T 256: this area has T 0 to T 255",
         "the error names the timer and the valid range"
     );
-    assert_eq!(area.fr(256, S5Kind::SOdt, true), Err(err));
+    assert_eq!(area.fr(256, true), Err(err));
 }
 
-/// The LAD box names of seed 000 §9.3-9.7 (the international mnemonic set, Fig. 9-4 ff.) and
+/// The LAD box names of LAD manual §9.3-9.7 (the international mnemonic set, Fig. 9-4 ff.) and
 /// the STL operations that start the same timers, in the manual's order.
 #[test]
-fn kind_names_seed000_9_3_to_9_7() {
+fn kind_names_lad_9_3_to_9_7() {
     let names = S5Kind::ALL.map(|k| (k.name(), k.stl()));
     assert_eq!(
         names,
@@ -404,18 +515,21 @@ fn kind_names_seed000_9_3_to_9_7() {
     );
 }
 
-/// Seed 000 §9.1: the time value is three BCD digits, 0 to 999; a state outside that range is
-/// not a timer state, and the packed cell refuses it.
+/// LAD manual §9.1: the time value is three BCD digits, 0 to 999; a state outside that range is
+/// not a timer state, and every type that holds a timer refuses it.
 #[test]
-fn state_validity_seed000_9_1_value_0_to_999() {
-    use plc_timers::s5::cell::Cell;
-    use plc_timers::s5::S5State;
+fn state_validity_lad_9_1_value_0_to_999() {
     let at = |value| S5State {
         value,
         ..S5State::RESET
     };
     assert!(at(0).is_valid() && at(999).is_valid());
     assert!(!at(1000).is_valid() && !at(u16::MAX).is_valid());
-    assert!(Cell::from_state(at(999)).is_some());
-    assert!(Cell::from_state(at(1000)).is_none());
+    assert!(TimerWord::from_state(at(999)).is_some());
+    assert!(TimerWord::from_state(at(1000)).is_none());
+    assert!(S5TimerRef::from_state(at(1000), CpuTime::ZERO).is_none());
+    assert!(S5Timer::from_state(at(1000), CpuTime::ZERO).is_none());
+    let mut area = TimerMemory::<1>::new();
+    assert_eq!(area.set(0, at(1000)), Ok(false));
+    assert_eq!(area.get(0), Ok(S5State::RESET), "refused: unchanged");
 }

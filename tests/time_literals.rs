@@ -1,4 +1,4 @@
-//! Literal parsing and formatting of S5TIME and TIME, against the seeds' examples.
+//! Literal parsing and formatting of S5TIME and TIME, against the manuals' examples.
 
 use plc_timers::time::{LiteralErrorKind, S5Time, Time, TimeBase};
 
@@ -30,9 +30,9 @@ fn time_err(text: &str) -> LiteralErrorKind {
     }
 }
 
-/// Seed 000 §9.1, Fig. 9-1: 127 s on the 1 s base is `W#16#2127`.
+/// LAD manual §9.1, Fig. 9-1: 127 s on the 1 s base is `W#16#2127`.
 #[test]
-fn s5t_seed000_fig_9_1_127s_on_1s_base() {
+fn s5t_lad_fig_9_1_127s_on_1s_base() {
     let t = s5("W#16#2127");
     assert_eq!(
         (t.units(), t.base(), t.as_millis()),
@@ -42,10 +42,10 @@ fn s5t_seed000_fig_9_1_127s_on_1s_base() {
     assert_eq!(t.to_string(), "S5T#2M7S");
 }
 
-/// Seed 003 §7: 1 s as `W#16#2001`, `W#16#1010` or `W#16#0100`; the automatic (preferred)
+/// Berger §7: 1 s as `W#16#2001`, `W#16#1010` or `W#16#0100`; the automatic (preferred)
 /// encoding is the finest base, `W#16#0100`.
 #[test]
-fn s5t_seed003_three_encodings_of_one_second() {
+fn s5t_berger_three_encodings_of_one_second() {
     for w in ["W#16#2001", "W#16#1010", "W#16#0100"] {
         assert_eq!(s5(w).as_millis(), 1_000, "{w}");
     }
@@ -53,9 +53,9 @@ fn s5t_seed003_three_encodings_of_one_second() {
     assert_eq!(S5Time::from_millis(1_000).map(S5Time::to_word), Ok(0x0100));
 }
 
-/// Seed 000 §9.1, Table 9-2: the range of each base, and the maximum `2H_46M_30S` = 9 990 s.
+/// LAD manual §9.1, Table 9-2: the range of each base, and the maximum `2H_46M_30S` = 9 990 s.
 #[test]
-fn s5t_seed000_table_9_2_base_ranges() {
+fn s5t_lad_table_9_2_base_ranges() {
     let cases = [
         ("S5T#10MS", 0x0001),
         ("S5T#9S_990MS", 0x0999),
@@ -72,9 +72,9 @@ fn s5t_seed000_table_9_2_base_ranges() {
     assert_eq!(s5_err("S5T#2H_46M_30S_1MS"), LiteralErrorKind::OutOfRange);
 }
 
-/// Seed 000 §9.1: "the value is rounded down to the nearest smaller number with this base".
+/// LAD manual §9.1: "the value is rounded down to the nearest smaller number with this base".
 #[test]
-fn s5t_seed000_9_1_rounds_down() {
+fn s5t_lad_9_1_rounds_down() {
     assert_eq!(s5("S5T#10S5MS").to_word(), 0x1100); // 10.005 s -> 100 x 100 ms
     assert_eq!(s5("S5T#9MS").to_word(), 0x0000);
     assert_eq!(s5("S5T#1H").to_word(), 0x3360);
@@ -111,7 +111,7 @@ fn s5t_malformed() {
         ("S5T#_2S", UnexpectedChar('_')),
         ("S5T#2S_", UnexpectedChar('_')),
         ("S5T#2S ", UnexpectedChar(' ')),
-        ("S5T#-2S", OutOfRange),
+        ("S5T#-2S", Negative),
         ("S5T#99999999999999999999999S", Overflow),
         ("W#16#", HexDigits),
         ("W#16#12345", HexDigits),
@@ -124,10 +124,10 @@ fn s5t_malformed() {
     }
 }
 
-/// Seed 001, Table 8-21: T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms, stored as
+/// S7-1200 manual, Table 8-21: T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms, stored as
 /// -2 147 483 648 ..= 2 147 483 647 ms; one past either end is an error.
 #[test]
-fn time_seed001_table_8_21_range_ends() {
+fn time_s7_1200_table_8_21_range_ends() {
     assert_eq!(time("T#-24d_20h_31m_23s_648ms"), i32::MIN);
     assert_eq!(time("T#24d_20h_31m_23s_647ms"), i32::MAX);
     assert_eq!(
@@ -144,9 +144,9 @@ fn time_seed001_table_8_21_range_ends() {
     assert_eq!(Time::MAX.to_string(), "T#24D_20H_31M_23S_647MS");
 }
 
-/// Seed 001: "T#200ms or 200" and "T#2s_200ms".
+/// S7-1200 manual: "T#200ms or 200" and "T#2s_200ms".
 #[test]
-fn time_seed001_literal_forms() {
+fn time_s7_1200_literal_forms() {
     assert_eq!(time("T#200ms"), 200);
     assert_eq!(time("200"), 200);
     assert_eq!(time("T#2s_200ms"), 2_200);
@@ -211,7 +211,7 @@ fn s5t_malformed_shapes() {
         ("S5T#3H", OutOfRange),                     // above 9 990 s
         ("S5T#9991S", OutOfRange),                  // one second above
         ("S5T#9990S_1MS", OutOfRange),              // exact value checked before rounding
-        ("S5TIME#-0MS", OutOfRange),                // negative S5TIME
+        ("S5TIME#-0MS", Negative),                  // negative S5TIME
         ("S5T#18446744073709551615MS", OutOfRange), // u64::MAX fits the lexer, not S5TIME
         ("S5T#18446744073709551616MS", Overflow),   // u64::MAX + 1 overflows while parsing
         ("S5T#18446744073709551615S", Overflow),    // the product overflows u64
@@ -265,10 +265,10 @@ fn time_malformed_shapes() {
     assert_eq!(time("T#24D"), 2_073_600_000);
 }
 
-/// TIME-ARITH-01 at the seed 001 range ends: one past either end is `None` (checked) or the
+/// TIME-ARITH-01 at the S7-1200 manual range ends: one past either end is `None` (checked) or the
 /// end itself (saturating).
 #[test]
-fn time_seed001_arithmetic_at_range_ends() {
+fn time_s7_1200_arithmetic_at_range_ends() {
     let one = Time::from_millis(1);
     assert_eq!(Time::MAX.checked_add(one), None);
     assert_eq!(Time::MIN.checked_sub(one), None);
@@ -282,10 +282,10 @@ fn time_seed001_arithmetic_at_range_ends() {
     );
 }
 
-/// Seed 001 Table 8-21 note 1: a negative PT is taken as 0; a non-negative one as it is, up to
+/// S7-1200 manual Table 8-21 note 1: a negative PT is taken as 0; a non-negative one as it is, up to
 /// the largest TIME.
 #[test]
-fn time_seed001_table_8_21_negative_preset_taken_as_zero() {
+fn time_s7_1200_table_8_21_negative_preset_taken_as_zero() {
     assert_eq!(Time::MIN.clamp_negative(), 0);
     assert_eq!(Time::from_millis(-1).clamp_negative(), 0);
     assert_eq!(Time::ZERO.clamp_negative(), 0);
@@ -324,7 +324,7 @@ fn error_positions_point_at_the_fault() {
         ("W#16#", K::HexDigits, 5),
         ("W#16#00001", K::HexDigits, 5),
         ("W#16#+123", K::HexDigits, 5),
-        ("S5T#-5S", K::OutOfRange, 4),
+        ("S5T#-5S", K::Negative, 4),
         ("S5T#3H", K::OutOfRange, 4),
     ];
     for (text, kind, position) in s5 {
@@ -371,4 +371,25 @@ fn error_messages_name_the_type_and_its_forms() {
     let time = "T#5Q".parse::<Time>().expect_err("unit").to_string();
     assert!(s5.ends_with("units are H, M, S, MS"), "{s5}");
     assert!(time.ends_with("units are D, H, M, S, MS"), "{time}");
+}
+
+/// A negative S5TIME has its own message, which names the range, instead of "above the
+/// maximum" (S5T-LIT-01); the error points at the sign.
+#[test]
+fn s5t_negative_has_its_own_message() {
+    let e = S5Time::parse("S5T#-1S").expect_err("an S5TIME is never negative");
+    assert_eq!((e.kind, e.position), (LiteralErrorKind::Negative, 4));
+    let message = e.to_string();
+    assert!(message.contains("cannot be negative"), "{message}");
+    assert!(!message.contains("above"), "{message}");
+}
+
+/// The literal parsers are `const fn`: a constant written as a literal is checked at compile
+/// time (the doc tests of `s5time!` and `time!` show that a bad literal does not compile).
+#[test]
+fn literals_as_constants() {
+    const TV: S5Time = plc_timers::s5time!("S5T#2M7S");
+    const PT: Time = plc_timers::time!("T#-5S");
+    assert_eq!((TV.to_word(), PT.as_millis()), (0x2127, -5_000));
+    assert_eq!(Ok(TV), S5Time::parse("W#16#2127"));
 }

@@ -1,4 +1,4 @@
-//! The S5TIME word against the seeds' examples: per-base ranges, the automatic base, BCD and
+//! The S5TIME word against the manuals' examples: per-base ranges, the automatic base, BCD and
 //! binary readings, and the canonical literal (the CLI contract's `s5time` line).
 
 use plc_timers::time::{bcd3_decode, S5Time, S5TimeError, Time, TimeBase};
@@ -7,11 +7,11 @@ fn word(w: u16) -> S5Time {
     S5Time::from_word(w).unwrap_or_else(|e| panic!("W#16#{w:04X}: {e}"))
 }
 
-/// Seed 000 §9.1, Table 9-2: the smallest and largest value of each base, as words, durations
+/// LAD manual §9.1, Table 9-2: the smallest and largest value of each base, as words, durations
 /// and canonical literals. 10 ms: 10MS..9S_990MS; 100 ms: 100MS..1M_39S_900MS; 1 s: 1S..16M_39S;
 /// 10 s: 10S..2H_46M_30S.
 #[test]
-fn s5t_seed000_table_9_2_per_base_range_ends() {
+fn s5t_lad_table_9_2_per_base_range_ends() {
     let cases = [
         (0x0001, TimeBase::Ms10, 10, "S5T#10MS"),
         (0x0999, TimeBase::Ms10, 9_990, "S5T#9S990MS"),
@@ -38,10 +38,10 @@ fn s5t_seed000_table_9_2_per_base_range_ends() {
     }
 }
 
-/// Seed 000 §9.1 / Table 9-2: the maximum 9 990 s is `S5T#2H_46M_30S` = `W#16#3999`, and is
+/// LAD manual §9.1 / Table 9-2: the maximum 9 990 s is `S5T#2H_46M_30S` = `W#16#3999`, and is
 /// `S5Time::MAX`; one millisecond more is an error, not a clamp.
 #[test]
-fn s5t_seed000_max_9990s_is_w16_3999() {
+fn s5t_lad_max_9990s_is_w16_3999() {
     assert_eq!(S5Time::from_millis(9_990_000), Ok(S5Time::MAX));
     assert_eq!(S5Time::MAX.to_word(), 0x3999);
     assert_eq!("S5T#2H_46M_30S".parse::<S5Time>(), Ok(S5Time::MAX));
@@ -51,10 +51,10 @@ fn s5t_seed000_max_9990s_is_w16_3999() {
     );
 }
 
-/// Seed 000 §9.1, Fig. 9-1: `W#16#2127` is 127 units of 1 s; DUAL/BI reads the units in
+/// LAD manual §9.1, Fig. 9-1: `W#16#2127` is 127 units of 1 s; DUAL/BI reads the units in
 /// binary (127), DEZ/BCD reads the value field in BCD (0x127).
 #[test]
-fn s5t_seed000_fig_9_1_bcd_and_binary_readings() {
+fn s5t_lad_fig_9_1_bcd_and_binary_readings() {
     let t = word(0x2127);
     assert_eq!(t.units(), 127);
     assert_eq!(t.bcd(), 0x127);
@@ -62,10 +62,10 @@ fn s5t_seed000_fig_9_1_bcd_and_binary_readings() {
     assert_eq!(Time::from(t), Time::from_millis(127_000));
 }
 
-/// Seed 003 §7: 1 s is `W#16#2001`, `W#16#1010` or `W#16#0100`; all three normalise to the
+/// Berger §7: 1 s is `W#16#2001`, `W#16#1010` or `W#16#0100`; all three normalise to the
 /// automatic `W#16#0100`, and only that one is automatic.
 #[test]
-fn s5t_seed003_one_second_normalises_to_w16_0100() {
+fn s5t_berger_one_second_normalises_to_w16_0100() {
     for (w, automatic) in [(0x2001, false), (0x1010, false), (0x0100, true)] {
         let t = word(w);
         assert_eq!(t.is_automatic(), automatic, "W#16#{w:04X}");
@@ -88,11 +88,11 @@ fn s5t_cli_contract_canonical_literals() {
     assert_eq!(S5Time::MAX.to_string(), "S5T#2H46M30S");
 }
 
-/// Seed 000 §9.1 ("rounded down to the nearest smaller number with this base"): `S5T#10S5MS`
+/// LAD manual §9.1 ("rounded down to the nearest smaller number with this base"): `S5T#10S5MS`
 /// is 10 005 ms; 10 ms would need 1 000 units, so the base is 100 ms and the value 100 units
 /// (10 s), 5 ms lost. `S5T#16M39S999MS` (999 999 ms) lands on the 1 s base as 999 units.
 #[test]
-fn s5t_seed000_9_1_rounding_down_examples() {
+fn s5t_lad_9_1_rounding_down_examples() {
     let t: S5Time = "S5T#10S5MS".parse().expect("in range");
     assert_eq!(
         (t.base(), t.units(), t.to_word()),
