@@ -47,21 +47,21 @@ use crate::time::{CpuTime, S5Time, TimeBase};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub enum S5Kind {
-    /// `S_PULSE`, STL `SP` (German `SI`): pulse, Q = 1 while running and S = 1 (seed 000 §9.3).
+    /// `S_PULSE`, STL `SP` (German `SI`): pulse, Q = 1 while running and S = 1 (LAD manual §9.3).
     #[doc(alias = "SP")]
     #[doc(alias = "SI")]
     SPulse,
-    /// `S_PEXT`, STL `SE` (German `SV`): extended pulse, runs on when S falls (seed 000 §9.4).
+    /// `S_PEXT`, STL `SE` (German `SV`): extended pulse, runs on when S falls (LAD manual §9.4).
     #[doc(alias = "SE")]
     #[doc(alias = "SV")]
     SPext,
-    /// `S_ODT`, STL `SD` (German `SE`): on-delay, Q = 1 after the time while S = 1 (seed 000 §9.5).
+    /// `S_ODT`, STL `SD` (German `SE`): on-delay, Q = 1 after the time while S = 1 (LAD manual §9.5).
     #[doc(alias = "SD")]
     SOdt,
-    /// `S_ODTS`, STL `SS`: retentive on-delay, Q = 1 after the time until R (seed 000 §9.6).
+    /// `S_ODTS`, STL `SS`: retentive on-delay, Q = 1 after the time until R (LAD manual §9.6).
     #[doc(alias = "SS")]
     SOdts,
-    /// `S_OFFDT`, STL `SF` (German `SA`): off-delay, starts on a falling S (seed 000 §9.7).
+    /// `S_OFFDT`, STL `SF` (German `SA`): off-delay, starts on a falling S (LAD manual §9.7).
     #[doc(alias = "SF")]
     #[doc(alias = "SA")]
     SOffdt,

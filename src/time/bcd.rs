@@ -1,5 +1,5 @@
 //! Three-digit BCD, the form of the S5TIME value field, the DEZ/BCD timer output and the S5
-//! counter's CV_BCD (seed 000 §9.1: "each group of four bits holds the binary code of one
+//! counter's CV_BCD (LAD manual §9.1: "each group of four bits holds the binary code of one
 //! decimal digit").
 
 /// Encodes 0..=999 as three BCD digits (bits 11-0). Values above 999 give digits above 9 in

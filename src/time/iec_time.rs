@@ -1,4 +1,4 @@
-//! IEC `TIME`: a signed 32-bit count of milliseconds (seed 001, Table 8-21).
+//! IEC `TIME`: a signed 32-bit count of milliseconds (S7-1200 manual, Table 8-21).
 
 use super::literal::{char_at, has_prefix_ci, parse_components, write_components};
 use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
@@ -79,7 +79,7 @@ impl Time {
         }
     }
 
-    /// The preset as a timer instruction uses it: a negative `PT` is taken as 0 (seed 001,
+    /// The preset as a timer instruction uses it: a negative `PT` is taken as 0 (S7-1200 manual,
     /// Table 8-21 note 1).
     pub const fn clamp_negative(self) -> u32 {
         if self.0 < 0 {
@@ -102,7 +102,7 @@ impl Time {
     /// Parses `T#…` or `TIME#…` (case-insensitive, underscores optional, an optional `-` after
     /// `#`, units D, H, M, S, MS from largest to smallest, each at most once; the first may exceed
     /// its usual range, as in `T#90M`), or a plain whole number of milliseconds with an optional
-    /// sign (seed 001: "T#200ms or 200"). The range is checked exactly. A `const fn`, so that
+    /// sign (S7-1200 manual: "T#200ms or 200"). The range is checked exactly. A `const fn`, so that
     /// [`crate::time!`] checks a literal at compile time; [`str::parse`] calls it too.
     ///
     /// ```

@@ -1,4 +1,4 @@
-//! The S5TIME word (seed 000 §9.1, seed 003 §7).
+//! The S5TIME word (LAD manual §9.1, Berger §7.1).
 //!
 //! ```text
 //!  15 14 | 13 12 | 11 .. 8 | 7 .. 4 | 3 .. 0
@@ -12,7 +12,7 @@ use super::literal::{has_prefix_ci, parse_components, write_components};
 use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 
 /// The time base of an S5 timer: the interval after which the operating system decrements the
-/// timer value by one unit (seed 000 §9.1, Table 9-1).
+/// timer value by one unit (LAD manual §9.1, Table 9-1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 #[repr(u8)]
@@ -159,7 +159,7 @@ impl S5Time {
     }
 
     /// Decodes a word: bits 11-0 three BCD digits (each checked), bits 13-12 the base, bits 15-14
-    /// ignored (seed 000 §9.1; semantics brief §1).
+    /// ignored (LAD manual §9.1; the Siemens help calls them irrelevant).
     pub const fn from_word(word: u16) -> Result<S5Time, S5TimeError> {
         match bcd3_decode(word) {
             Ok(units) => Ok(S5Time {
@@ -203,7 +203,7 @@ impl S5Time {
         self.units as u32 * self.base.millis()
     }
 
-    /// The S5TIME for a duration, as `S5T#` literals are encoded (seed 000 §9.1): the finest base
+    /// The S5TIME for a duration, as `S5T#` literals are encoded (LAD manual §9.1): the finest base
     /// whose value, rounded **down** to that base, fits in 999 units; the value rounded down.
     ///
     /// Errors above 9 990 000 ms rather than clamping.
@@ -229,7 +229,7 @@ impl S5Time {
 
     /// The automatic encoding of this value's duration (what [`S5Time::from_millis`] gives for
     /// it): the same duration on the finest base that holds it. A value on a coarser base than
-    /// needed (seed 003: `W#16#2001` for 1 s) becomes the preferred form (`W#16#0100`).
+    /// needed (Berger §7.1: `W#16#2001` for 1 s) becomes the preferred form (`W#16#0100`).
     ///
     /// ```
     /// use plc_timers::time::S5Time;
