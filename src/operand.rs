@@ -74,3 +74,27 @@ impl fmt::Display for NoSuchOperand {
 
 #[cfg(feature = "std")]
 impl std::error::Error for NoSuchOperand {}
+
+/// The word of `operand` number `index` in an area, or the error naming the area's range.
+pub(crate) fn word<W: Copy>(
+    words: &[W],
+    operand: Operand,
+    index: usize,
+) -> Result<W, NoSuchOperand> {
+    words
+        .get(index)
+        .copied()
+        .ok_or(NoSuchOperand::new(operand, index, words.len()))
+}
+
+/// [`word`], for writing.
+pub(crate) fn word_mut<W>(
+    words: &mut [W],
+    operand: Operand,
+    index: usize,
+) -> Result<&mut W, NoSuchOperand> {
+    let count = words.len();
+    words
+        .get_mut(index)
+        .ok_or(NoSuchOperand::new(operand, index, count))
+}

@@ -6,7 +6,7 @@
 
 use super::word::{TimerWord, BASE, RUNNING};
 use super::{S5Input, S5Kind, S5Output, S5State};
-use crate::operand::{NoSuchOperand, Operand};
+use crate::operand::{self, NoSuchOperand, Operand};
 use crate::time::{CpuTime, S5Time, TimeBase};
 
 /// A timer memory area of `N` timers (`T 0` .. `T N-1`; 256 by default, the number LAD can
@@ -105,16 +105,11 @@ impl<const N: usize> TimerMemory<N> {
     }
 
     fn word(&mut self, index: usize) -> Result<&mut TimerWord, NoSuchOperand> {
-        self.words
-            .get_mut(index)
-            .ok_or(NoSuchOperand::new(Operand::Timer, index, N))
+        operand::word_mut(&mut self.words, Operand::Timer, index)
     }
 
     fn read(&self, index: usize) -> Result<TimerWord, NoSuchOperand> {
-        self.words
-            .get(index)
-            .copied()
-            .ok_or(NoSuchOperand::new(Operand::Timer, index, N))
+        operand::word(&self.words, Operand::Timer, index)
     }
 
     /// `n` ticks of `base` for the whole area: every running timer of that base loses

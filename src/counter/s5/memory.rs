@@ -2,7 +2,7 @@
 
 use super::word::S5Counter;
 use super::{CounterPreset, S5CounterInput, S5CounterKind, S5CounterOutput, S5CounterState};
-use crate::operand::{NoSuchOperand, Operand};
+use crate::operand::{self, NoSuchOperand, Operand};
 
 /// A counter memory area of `N` S5 counters (256 by default).
 ///
@@ -61,7 +61,11 @@ impl<const N: usize> CounterMemory<N> {
     }
 
     /// Puts counter `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
-    pub fn set_state(&mut self, index: usize, state: S5CounterState) -> Result<bool, NoSuchOperand> {
+    pub fn set_state(
+        &mut self,
+        index: usize,
+        state: S5CounterState,
+    ) -> Result<bool, NoSuchOperand> {
         let w = self.word(index)?;
         Ok(match S5Counter::from_state(state) {
             Some(new) => {
@@ -78,16 +82,11 @@ impl<const N: usize> CounterMemory<N> {
     }
 
     fn word(&mut self, index: usize) -> Result<&mut S5Counter, NoSuchOperand> {
-        self.words
-            .get_mut(index)
-            .ok_or(NoSuchOperand::new(Operand::Counter, index, N))
+        operand::word_mut(&mut self.words, Operand::Counter, index)
     }
 
     fn read(&self, index: usize) -> Result<S5Counter, NoSuchOperand> {
-        self.words
-            .get(index)
-            .copied()
-            .ok_or(NoSuchOperand::new(Operand::Counter, index, N))
+        operand::word(&self.words, Operand::Counter, index)
     }
 
     fn apply(
