@@ -20,6 +20,12 @@ use crate::iec::IecKind;
 use crate::s5::S5Kind;
 
 /// The four families of blocks.
+///
+/// ```
+/// use plc_timers::catalog::{Block, Family};
+/// assert_eq!(Block::Tonr.family(), Family::IecTimer);
+/// assert!(Family::S5Timer.is_timer() && !Family::S5Counter.is_timer());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Family {
     /// S5 timers of S7-300/400 ([`crate::s5`]).
@@ -40,6 +46,11 @@ impl Family {
 }
 
 /// What a preset is, and how it is written.
+///
+/// ```
+/// use plc_timers::catalog::{Block, PresetKind};
+/// assert_eq!(Block::SCu.preset().map(|p| p.kind), Some(PresetKind::S5Count));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PresetKind {
     /// An S5TIME (`TV`): `S5T#…`, `S5TIME#…`, `W#16#…`.
@@ -53,6 +64,12 @@ pub enum PresetKind {
 }
 
 /// What kind of value an input or output carries.
+///
+/// ```
+/// use plc_timers::catalog::{Block, ValueKind};
+/// let kinds: Vec<ValueKind> = Block::Ton.outputs().iter().map(|o| o.kind).collect();
+/// assert_eq!(kinds, [ValueKind::Bool, ValueKind::Int]);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ValueKind {
     /// A boolean signal, written `0`/`1`.
@@ -66,6 +83,12 @@ pub enum ValueKind {
 }
 
 /// One input or output of a block.
+///
+/// ```
+/// use plc_timers::catalog::{Block, ValueKind};
+/// let r = Block::Tonr.inputs()[1];
+/// assert_eq!((r.name, r.kind), ("R", ValueKind::Bool));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Port {
     /// The name as the manual's box writes it (`S`, `TV`, `IN`, `PT`, `CU`, `Q`, `ET`, …).
@@ -75,6 +98,12 @@ pub struct Port {
 }
 
 /// A preset input and how the command line may give it for every row.
+///
+/// ```
+/// use plc_timers::catalog::{Block, PresetKind};
+/// let pt = Block::Tp.preset().expect("every block has a preset");
+/// assert_eq!((pt.name, pt.option, pt.kind), ("PT", "pt", PresetKind::Time));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Preset {
     /// The input's name (`TV`, `PT`, `PV`).
@@ -137,6 +166,15 @@ const S5_COUNTER_OUT: &[Port] = &[
 ];
 
 /// Every block of the crate.
+///
+/// ```
+/// use plc_timers::catalog::Block;
+/// let names: Vec<&str> = Block::ALL.iter().map(|b| b.name()).collect();
+/// assert_eq!(names[..5], ["S_PULSE", "S_PEXT", "S_ODT", "S_ODTS", "S_OFFDT"]);
+/// assert_eq!(Block::lookup("ctud"), Some(Block::Ctud));
+/// assert_eq!(Block::lookup("SE"), Some(Block::SPext)); // English SE, not German SE
+/// assert_eq!(Block::lookup("nope"), None);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Block {
     /// `S_PULSE` (STL `SP`, German `SI`).
@@ -319,6 +357,12 @@ impl Block {
 }
 
 /// A block as the kind enum of its family: what the family's `call` takes.
+///
+/// ```
+/// use plc_timers::catalog::{Block, Kind};
+/// use plc_timers::iec::IecKind;
+/// assert_eq!(Block::Tof.kind(), Kind::IecTimer(IecKind::Tof));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Kind {
     /// An S5 timer.

@@ -4,6 +4,13 @@
 use core::fmt;
 
 /// Which memory area an operand addresses.
+///
+/// ```
+/// use plc_timers::counter::s5::CounterMemory;
+/// use plc_timers::Operand;
+/// let e = CounterMemory::<2>::new().load(2).unwrap_err();
+/// assert_eq!((e.operand, e.operand.letter()), (Operand::Counter, "C"));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Operand {
     /// A timer, `T n`.

@@ -36,6 +36,12 @@ use core::fmt::Debug;
 
 /// The integer types a counter counts in: SInt, Int, DInt, LInt, USInt, UInt, UDInt, ULInt.
 /// One generic implementation serves all eight.
+///
+/// ```
+/// use plc_timers::counter::CounterInt;
+/// assert_eq!(<u8 as CounterInt>::NAME, "USINT");
+/// assert_eq!(i16::MAX.saturating_inc(), i16::MAX); // never wraps
+/// ```
 pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
     /// The type's name in the manual (`INT`, `UDINT`, …).
     const NAME: &'static str;
@@ -92,6 +98,11 @@ counter_int!(u32, "UDINT");
 counter_int!(u64, "ULINT");
 
 /// Which IEC counter instruction.
+///
+/// ```
+/// use plc_timers::counter::CounterKind;
+/// assert_eq!(CounterKind::ALL.map(CounterKind::name), ["CTU", "CTD", "CTUD"]);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub enum CounterKind {
@@ -182,6 +193,11 @@ impl<T> CounterInput<T> {
 }
 
 /// The outputs of one call. CTU's Q is `qu`; CTD's Q is `qd`.
+///
+/// ```
+/// use plc_timers::counter::{outputs, CounterOutput};
+/// assert_eq!(outputs(-1i32, 5), CounterOutput { qu: false, qd: true, cv: -1 });
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct CounterOutput<T> {
     /// `QU` (CTU's `Q`): CV >= PV.
@@ -194,6 +210,12 @@ pub struct CounterOutput<T> {
 
 /// The observable state of an IEC counter: what the abstraction function produces. Every
 /// combination of fields is a state a counter can be in.
+///
+/// ```
+/// use plc_timers::counter::{CounterRef, CounterState};
+/// let state = CounterState { cv: 41u16, cu_prev: true, cd_prev: false };
+/// assert_eq!(plc_timers::counter::CounterOps::state(&CounterRef::from_state(state)), state);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct CounterState<T> {
@@ -206,6 +228,18 @@ pub struct CounterState<T> {
 }
 
 /// What both IEC counter implementations offer.
+///
+/// ```
+/// use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps, CounterRef};
+/// fn count_three(c: &mut dyn CounterOps<i32>) -> i32 {
+///     for cu in [true, false, true, false, true] {
+///         c.call(CounterKind::Ctu, CounterInput { cu, pv: 3, ..Default::default() });
+///     }
+///     c.state().cv
+/// }
+/// assert_eq!(count_three(&mut CounterRef::new()), 3);
+/// assert_eq!(count_three(&mut Counter::new()), 3);
+/// ```
 pub trait CounterOps<T: CounterInt> {
     /// One call of the instruction `kind` with its inputs (those it lacks are taken as 0,
     /// CNT-INPUTS-01).

@@ -22,6 +22,11 @@ pub struct CounterRef<T> {
 
 impl<T: CounterInt> CounterRef<T> {
     /// A new instance (CV = 0, no edge seen).
+    ///
+    /// ```
+    /// use plc_timers::counter::{CounterOps, CounterRef};
+    /// assert_eq!(CounterRef::<i64>::new().state().cv, 0);
+    /// ```
     pub const fn new() -> CounterRef<T> {
         CounterRef::from_state(CounterState {
             cv: T::ZERO,
@@ -31,6 +36,13 @@ impl<T: CounterInt> CounterRef<T> {
     }
 
     /// The instance in `state` (every counter state is valid).
+    ///
+    /// ```
+    /// use plc_timers::counter::{CounterInput, CounterKind, CounterOps, CounterRef, CounterState};
+    /// let mut c = CounterRef::from_state(CounterState { cv: i8::MAX, cu_prev: false, cd_prev: false });
+    /// let up = CounterInput { cu: true, pv: 0, ..Default::default() };
+    /// assert_eq!(c.call(CounterKind::Ctu, up).cv, i8::MAX); // CNT-SAT-01
+    /// ```
     pub const fn from_state(state: CounterState<T>) -> CounterRef<T> {
         CounterRef { state }
     }

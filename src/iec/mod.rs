@@ -44,6 +44,11 @@ pub use reference::IecTimerRef;
 pub use structure::{IecTimer, IecTimerOf};
 
 /// Which timer instruction runs on the structure.
+///
+/// ```
+/// use plc_timers::iec::IecKind;
+/// assert_eq!(IecKind::ALL.map(IecKind::name), ["TP", "TON", "TOF", "TONR"]);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub enum IecKind {
@@ -92,6 +97,12 @@ pub struct IecInput {
 
 impl IecInput {
     /// `IN` and `PT`, with `R` = 0.
+    ///
+    /// ```
+    /// use plc_timers::iec::IecInput;
+    /// let input = IecInput::new(true, plc_timers::time!("T#2S"));
+    /// assert!(input.input && !input.reset);
+    /// ```
     pub const fn new(input: bool, pt: Time) -> IecInput {
         IecInput {
             input,
@@ -108,6 +119,16 @@ impl IecInput {
 }
 
 /// The box outputs of one call.
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps};
+/// use plc_timers::time::CpuTime;
+/// let mut tof = IecTimer::new();
+/// let pt = plc_timers::time!("T#100MS");
+/// tof.call(IecKind::Tof, CpuTime::from_millis(0), IecInput::new(true, pt));
+/// let out = tof.call(IecKind::Tof, CpuTime::from_millis(30), IecInput::new(false, pt));
+/// assert_eq!(out, IecOutput { q: true, et: 0 }); // the delay starts at the falling edge
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct IecOutput<C = u32> {
     /// `Q`.
@@ -157,6 +178,20 @@ impl<C: ClockWord> IecState<C> {
 
 /// The operations of an IEC timer structure, common to the reference and the optimized one.
 /// `now` is the CPU time; the timer computes with its low `C::BITS` bits, the wrapping clock.
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
+/// use plc_timers::time::CpuTime;
+/// // One program against the interface, run on both implementations.
+/// fn after_rt<T: IecTimerOps<u32>>(mut t: T) -> (bool, u32) {
+///     let pt = plc_timers::time!("T#1S");
+///     t.call(IecKind::Ton, CpuTime::from_millis(0), IecInput::new(true, pt));
+///     t.reset_timer(); // the -(RT)- coil
+///     (t.read_q(CpuTime::from_millis(2_000)), t.state().et)
+/// }
+/// assert_eq!(after_rt(IecTimerRef::new()), (false, 0));
+/// assert_eq!(after_rt(IecTimer::new()), (false, 0));
+/// ```
 pub trait IecTimerOps<C: ClockWord> {
     /// Executes the box (or coil) instruction `kind` with its inputs; returns `Q` and `ET`.
     fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C>;

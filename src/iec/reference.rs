@@ -44,6 +44,11 @@ fn q_after_expiry(kind: IecKind) -> bool {
 
 impl<C: ClockWord> IecTimerRef<C> {
     /// The initial structure: everything 0 (a new or non-retentive instance DB).
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecTimerOps, IecTimerRef};
+    /// assert_eq!(IecTimerRef::<u32>::new().state(), Default::default());
+    /// ```
     pub const fn new() -> IecTimerRef<C> {
         IecTimerRef {
             state: IecState {
@@ -59,6 +64,13 @@ impl<C: ClockWord> IecTimerRef<C> {
     }
 
     /// The timer in `state`, or `None` when the state is not valid ([`IecState::is_valid`]).
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecState, IecTimerRef};
+    /// let running = IecState::<u32> { running: true, start: 5, pt: 10, ..Default::default() };
+    /// assert!(IecTimerRef::from_state(running).is_some());
+    /// assert!(IecTimerRef::from_state(IecState { et: 11, ..running }).is_none()); // ET > PT
+    /// ```
     pub fn from_state(state: IecState<C>) -> Option<IecTimerRef<C>> {
         state.is_valid().then_some(IecTimerRef { state })
     }

@@ -44,6 +44,12 @@ use crate::time::{CpuTime, S5Time, TimeBase};
 
 /// The five S5 timer kinds, with both mnemonic sets (watch the clash: English `SE` is the
 /// extended pulse, German `SE` the on-delay).
+///
+/// ```
+/// use plc_timers::s5::S5Kind;
+/// assert_eq!(S5Kind::ALL.map(S5Kind::stl), ["SP", "SE", "SD", "SS", "SF"]);
+/// assert!(S5Kind::SOffdt.starts_on_falling_edge());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub enum S5Kind {
@@ -126,6 +132,12 @@ pub struct S5Input {
 
 impl S5Input {
     /// `S`, `R` and `TV`, with `FR` = 0.
+    ///
+    /// ```
+    /// use plc_timers::s5::S5Input;
+    /// let input = S5Input::new(true, false, plc_timers::s5time!("S5T#5S"));
+    /// assert!(input.s && !input.fr);
+    /// ```
     pub const fn new(s: bool, r: bool, tv: S5Time) -> S5Input {
         S5Input {
             s,
@@ -143,6 +155,13 @@ impl S5Input {
 }
 
 /// The outputs of one execution.
+///
+/// ```
+/// use plc_timers::s5::{S5Output, S5State};
+/// use plc_timers::time::TimeBase;
+/// let running = S5State { running: true, value: 127, base: TimeBase::S1, q: true, ..S5State::RESET };
+/// assert_eq!(running.output(), S5Output { q: true, bi: 127, bcd: 0x2127 });
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct S5Output {
     /// `Q`, the timer status.
@@ -220,6 +239,17 @@ impl S5State {
 /// `call` executes the box `kind` at CPU time `now` (not before the previous call): the OS
 /// ticks of the timer's base since its previous call are applied first (S5TMR-TICK-01), then
 /// `FR`, the start logic of the kind and `R`, as the box compiles to STL.
+///
+/// ```
+/// use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef};
+/// use plc_timers::time::CpuTime;
+/// fn pulse_length(t: &mut dyn S5TimerOps) -> u64 {
+///     let on = S5Input::new(true, false, plc_timers::s5time!("S5T#30MS"));
+///     (0..10u64).map(|ms| t.call(S5Kind::SPulse, CpuTime::from_millis(10 * ms), on).q as u64).sum()
+/// }
+/// assert_eq!(pulse_length(&mut S5TimerRef::new()), 3); // Q = 1 at 0, 10 and 20 ms
+/// assert_eq!(pulse_length(&mut S5Timer::new()), 3);
+/// ```
 pub trait S5TimerOps {
     /// One execution of the box `kind` at `now`.
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output;

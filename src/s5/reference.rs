@@ -50,6 +50,11 @@ pub const fn is_on_delay(kind: S5Kind) -> bool {
 
 impl S5TimerRef {
     /// A cleared timer whose previous execution was at CPU time 0.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5State, S5TimerOps, S5TimerRef};
+    /// assert_eq!(S5TimerRef::new().state(), S5State::RESET);
+    /// ```
     pub const fn new() -> S5TimerRef {
         S5TimerRef {
             state: S5State::RESET,

@@ -34,6 +34,11 @@ impl CpuTime {
     pub const ZERO: CpuTime = CpuTime(0);
 
     /// The time `millis` milliseconds after the CPU's start.
+    ///
+    /// ```
+    /// use plc_timers::time::CpuTime;
+    /// assert_eq!(CpuTime::from_millis(1_500).as_millis(), 1_500);
+    /// ```
     pub const fn from_millis(millis: u64) -> CpuTime {
         CpuTime(millis)
     }
@@ -62,6 +67,13 @@ impl From<u64> for CpuTime {
 }
 
 /// An unsigned clock word that counts milliseconds and wraps at `2^BITS`.
+///
+/// ```
+/// use plc_timers::time::clock::ClockWord;
+/// // START just before the 8-bit clock wraps, now just after: 20 ms have passed.
+/// assert_eq!(5u8.elapsed_since(241), 20);
+/// assert_eq!(u32::from_preset(7), 7);
+/// ```
 pub trait ClockWord: Copy + Eq + Ord + Debug + Default {
     /// The width in bits.
     const BITS: u32;

@@ -5,6 +5,14 @@ use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 use super::S5Time;
 
 /// IEC `TIME`: signed 32-bit milliseconds, `T#-24d_20h_31m_23s_648ms ..= T#24d_20h_31m_23s_647ms`.
+///
+/// ```
+/// use plc_timers::time::Time;
+/// let t: Time = "T#1D_2H".parse()?;
+/// assert_eq!(t.as_millis(), 93_600_000);
+/// assert_eq!(t.to_string(), "T#1D_2H");
+/// # Ok::<(), plc_timers::time::LiteralError>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub struct Time(i32);
@@ -18,6 +26,11 @@ impl Time {
     pub const MAX: Time = Time(i32::MAX);
 
     /// The `TIME` of `millis` milliseconds.
+    ///
+    /// ```
+    /// use plc_timers::time::Time;
+    /// assert_eq!(Time::from_millis(-5).to_string(), "T#-5MS");
+    /// ```
     pub const fn from_millis(millis: i32) -> Time {
         Time(millis)
     }
@@ -30,6 +43,12 @@ impl Time {
 
 impl Time {
     /// The `TIME` of `millis` ms, or `None` outside the 32-bit range.
+    ///
+    /// ```
+    /// use plc_timers::time::Time;
+    /// assert_eq!(Time::from_millis_i64(i64::from(i32::MAX)), Some(Time::MAX));
+    /// assert_eq!(Time::from_millis_i64(1 << 31), None);
+    /// ```
     pub const fn from_millis_i64(millis: i64) -> Option<Time> {
         if millis < i32::MIN as i64 || millis > i32::MAX as i64 {
             None
@@ -141,7 +160,11 @@ impl Time {
             }
         };
         // Any magnitude above 2^31 is out of range; capping keeps the sign change exact.
-        let capped = if magnitude > 1 << 40 { 1 << 40 } else { magnitude } as i64;
+        let capped = if magnitude > 1 << 40 {
+            1 << 40
+        } else {
+            magnitude
+        } as i64;
         let signed = if negative { -capped } else { capped };
         match Time::from_millis_i64(signed) {
             Some(t) => Ok(t),

@@ -9,6 +9,12 @@
 use core::fmt;
 
 /// A duration unit of a literal.
+///
+/// ```
+/// use plc_timers::time::{LiteralErrorKind, Time, Unit};
+/// let e = Time::parse("T#1S_2M").unwrap_err();
+/// assert_eq!(e.kind, LiteralErrorKind::UnitOrder(Unit::Minute));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Unit {
     /// `D`, days (TIME only).
@@ -64,6 +70,11 @@ impl Unit {
 }
 
 /// Which literal type was being parsed.
+///
+/// ```
+/// use plc_timers::time::{LiteralType, S5Time};
+/// assert_eq!(S5Time::parse("T#1S").unwrap_err().what, LiteralType::S5Time);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LiteralType {
     /// `S5TIME`: `S5T#…`, `S5TIME#…`, `W#16#…`.
@@ -83,6 +94,12 @@ impl LiteralType {
 }
 
 /// What was wrong with a duration or word literal.
+///
+/// ```
+/// use plc_timers::time::{LiteralErrorKind, S5Time};
+/// assert_eq!(S5Time::parse("S5T#1.5S").unwrap_err().kind, LiteralErrorKind::Fraction);
+/// assert_eq!(S5Time::parse("W#16#00A1").unwrap_err().kind, LiteralErrorKind::BcdDigit(0xA));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum LiteralErrorKind {
@@ -119,6 +136,17 @@ pub enum LiteralErrorKind {
 }
 
 /// An error in a literal: what was wrong and where (byte offset in the given text).
+///
+/// ```
+/// use plc_timers::time::Time;
+/// let e = Time::parse("T#5S_75M").unwrap_err();
+/// assert_eq!(e.position, 7); // the unit M, out of order
+/// assert_eq!(
+///     e.to_string(),
+///     "invalid TIME literal at byte 7: unit M repeated or out of order; \
+///      units go from largest to smallest, each once"
+/// );
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LiteralError {
     /// Which literal type was being parsed.
@@ -260,7 +288,11 @@ const fn unit_of(text: &[u8], from: usize, to: usize, days: bool) -> Option<Unit
     }
 }
 
-const fn fail(what: LiteralType, position: usize, kind: LiteralErrorKind) -> Result<u64, LiteralError> {
+const fn fail(
+    what: LiteralType,
+    position: usize,
+    kind: LiteralErrorKind,
+) -> Result<u64, LiteralError> {
     Err(LiteralError::new(what, position, kind))
 }
 
@@ -322,7 +354,8 @@ pub(crate) const fn parse_components(
             } else if text[unit_start] >= 0x80 {
                 fail(what, unit_start, LiteralErrorKind::UnknownUnit)
             } else {
-                fail(what, 
+                fail(
+                    what,
                     unit_start,
                     LiteralErrorKind::UnexpectedChar(char_at(text, unit_start)),
                 )

@@ -13,6 +13,12 @@ use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 
 /// The time base of an S5 timer: the interval after which the operating system decrements the
 /// timer value by one unit (LAD manual §9.1, Table 9-1).
+///
+/// ```
+/// use plc_timers::time::TimeBase;
+/// assert_eq!(TimeBase::ALL.map(TimeBase::millis), [10, 100, 1_000, 10_000]);
+/// assert_eq!(TimeBase::from_bits(0b10), TimeBase::S1);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 #[repr(u8)]
@@ -32,6 +38,12 @@ impl TimeBase {
     pub const ALL: [TimeBase; 4] = [TimeBase::Ms10, TimeBase::Ms100, TimeBase::S1, TimeBase::S10];
 
     /// The base encoded by the two low bits of `bits` (the word's bits 13-12 shifted down).
+    ///
+    /// ```
+    /// use plc_timers::time::TimeBase;
+    /// assert_eq!(TimeBase::from_bits(3), TimeBase::S10);
+    /// assert_eq!(TimeBase::from_bits(7), TimeBase::S10); // only the two low bits count
+    /// ```
     pub const fn from_bits(bits: u8) -> TimeBase {
         match bits & 0b11 {
             0 => TimeBase::Ms10,
@@ -58,6 +70,13 @@ impl TimeBase {
 }
 
 /// What was wrong with an S5TIME value.
+///
+/// ```
+/// use plc_timers::time::{S5Time, S5TimeError};
+/// let e = S5Time::from_word(0x20A1).unwrap_err();
+/// assert_eq!(e, S5TimeError::BcdDigit { word: 0x20A1, position: 1, digit: 0xA });
+/// assert_eq!(e.to_string(), "W#16#20A1 is not a valid S5TIME: its tens BCD digit is A, digits must be 0-9");
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum S5TimeError {
@@ -117,6 +136,13 @@ impl std::error::Error for S5TimeError {}
 /// A valid S5TIME: 0..=999 units of a [`TimeBase`].
 ///
 /// The invariant `units <= 999` holds for every value of this type; constructors check it.
+///
+/// ```
+/// use plc_timers::time::{S5Time, TimeBase};
+/// let t = S5Time::new(127, TimeBase::S1)?;
+/// assert_eq!((t.as_millis(), t.to_word(), t.to_string()), (127_000, 0x2127, "S5T#2M7S".to_string()));
+/// # Ok::<(), plc_timers::time::S5TimeError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct S5Time {
     units: u16,
@@ -151,6 +177,12 @@ impl S5Time {
     pub const MAX_MILLIS: u32 = 9_990_000;
 
     /// `units` (0..=999) of `base`.
+    ///
+    /// ```
+    /// use plc_timers::time::{S5Time, TimeBase};
+    /// assert!(S5Time::new(999, TimeBase::S10).is_ok());
+    /// assert!(S5Time::new(1000, TimeBase::Ms10).is_err());
+    /// ```
     pub const fn new(units: u16, base: TimeBase) -> Result<S5Time, S5TimeError> {
         if units > 999 {
             return Err(S5TimeError::UnitsOutOfRange { units });
@@ -160,6 +192,13 @@ impl S5Time {
 
     /// Decodes a word: bits 11-0 three BCD digits (each checked), bits 13-12 the base, bits 15-14
     /// ignored (LAD manual §9.1; the Siemens help calls them irrelevant).
+    ///
+    /// ```
+    /// use plc_timers::time::{S5Time, TimeBase};
+    /// let t = S5Time::from_word(0xC127)?; // bits 15-14 ignored
+    /// assert_eq!((t.units(), t.base()), (127, TimeBase::Ms10));
+    /// # Ok::<(), plc_timers::time::S5TimeError>(())
+    /// ```
     pub const fn from_word(word: u16) -> Result<S5Time, S5TimeError> {
         match bcd3_decode(word) {
             Ok(units) => Ok(S5Time {
@@ -207,6 +246,12 @@ impl S5Time {
     /// whose value, rounded **down** to that base, fits in 999 units; the value rounded down.
     ///
     /// Errors above 9 990 000 ms rather than clamping.
+    ///
+    /// ```
+    /// use plc_timers::time::S5Time;
+    /// assert_eq!(S5Time::from_millis(10_005).map(S5Time::to_word), Ok(0x1100)); // rounded down
+    /// assert!(S5Time::from_millis(9_990_001).is_err());
+    /// ```
     pub const fn from_millis(millis: u64) -> Result<S5Time, S5TimeError> {
         if millis > S5Time::MAX_MILLIS as u64 {
             return Err(S5TimeError::DurationOutOfRange { millis });

@@ -16,7 +16,7 @@ use crate::operand::{self, NoSuchOperand, Operand};
 ///
 /// // A scan loop: C 0 counts parts on a rising sensor, C 1 is loaded with 10 and counts down.
 /// let mut counters = CounterMemory::<2>::new();
-/// let ten = CounterPreset::new(10)?;
+/// let ten = CounterPreset::new(10).expect("0..=999");
 /// counters.set(1, true, ten)?;
 /// for sensor in [true, false, true, false, true] {
 ///     counters.call(0, S5CounterKind::SCu, S5CounterInput { cu: sensor, ..Default::default() })?;
@@ -26,7 +26,7 @@ use crate::operand::{self, NoSuchOperand, Operand};
 /// assert_eq!(counters.load_bcd(1)?, 0x0007);
 /// let q: Vec<bool> = counters.outputs().map(|o| o.q).collect();
 /// assert_eq!(q, [true, true]);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// # Ok::<(), plc_timers::NoSuchOperand>(())
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CounterMemory<const N: usize = 256> {

@@ -41,6 +41,12 @@ pub use word::S5Counter;
 use crate::time::bcd3_encode;
 
 /// Which S5 counter box.
+///
+/// ```
+/// use plc_timers::counter::s5::S5CounterKind;
+/// assert!(S5CounterKind::SCud.counts_up() && S5CounterKind::SCud.counts_down());
+/// assert!(!S5CounterKind::SCu.counts_down());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 pub enum S5CounterKind {
@@ -84,6 +90,13 @@ impl S5CounterKind {
 pub const CV_MAX: u16 = 999;
 
 /// The inputs of one S5 counter box call.
+///
+/// ```
+/// use plc_timers::counter::s5::{CounterPreset, S5CounterInput};
+/// let set = S5CounterInput { s: true, pv: CounterPreset::new(20)?, ..Default::default() };
+/// assert!(set.s && !set.cu);
+/// # Ok::<(), plc_timers::counter::s5::CounterPresetError>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct S5CounterInput {
     /// `CU` (`ZV`), count up on a rising edge.
@@ -102,6 +115,12 @@ pub struct S5CounterInput {
 }
 
 /// The outputs of one S5 counter box call.
+///
+/// ```
+/// use plc_timers::counter::s5::S5CounterState;
+/// let out = S5CounterState { cv: 120, ..Default::default() }.output();
+/// assert_eq!((out.q, out.cv, out.cv_bcd), (true, 120, 0x0120));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct S5CounterOutput {
     /// `Q`: CV != 0.
@@ -162,6 +181,14 @@ impl S5CounterState {
 }
 
 /// What both S5 counter implementations offer.
+///
+/// ```
+/// use plc_timers::counter::s5::{S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef};
+/// let down = S5CounterInput { cd: true, ..Default::default() };
+/// for c in [&mut S5CounterRef::new() as &mut dyn S5CounterOps, &mut S5Counter::new()] {
+///     assert_eq!(c.call(S5CounterKind::SCd, down).cv, 0); // saturates at 0
+/// }
+/// ```
 pub trait S5CounterOps {
     /// One call of the box `kind` (the inputs it lacks are taken as 0, SC-INPUTS-01).
     fn call(&mut self, kind: S5CounterKind, input: S5CounterInput) -> S5CounterOutput;

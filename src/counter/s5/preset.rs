@@ -20,6 +20,12 @@ use crate::time::{bcd3_decode, bcd3_encode, has_prefix_ci};
 pub struct CounterPreset(u16);
 
 /// What was wrong with a counter preset.
+///
+/// ```
+/// use plc_timers::counter::s5::{CounterPreset, CounterPresetError};
+/// assert_eq!(CounterPreset::parse("C#1000"), Err(CounterPresetError::OutOfRange(1000)));
+/// assert_eq!(CounterPreset::parse("W#16#00A0"), Err(CounterPresetError::BcdDigit(0x00A0)));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum CounterPresetError {
@@ -56,6 +62,12 @@ impl std::error::Error for CounterPresetError {}
 
 impl CounterPreset {
     /// The preset `n`, 0..=999.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::CounterPreset;
+    /// assert_eq!(CounterPreset::new(999).map(CounterPreset::value), Ok(999));
+    /// assert!(CounterPreset::new(1000).is_err());
+    /// ```
     pub const fn new(n: u16) -> Result<CounterPreset, CounterPresetError> {
         if n > CV_MAX {
             Err(CounterPresetError::OutOfRange(n as u32))

@@ -1,9 +1,7 @@
 //! The reference semantics of the S5 counters, one function per rule. The box executes as the
 //! STL sequence it compiles to: `FR`, `CU`, `CD`, `S`, `R` (SC-STL-01).
 
-use super::{
-    S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput, S5CounterState, CV_MAX,
-};
+use super::{S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput, S5CounterState, CV_MAX};
 
 /// The reference S5 counter.
 ///
@@ -22,6 +20,11 @@ pub struct S5CounterRef {
 
 impl S5CounterRef {
     /// A new counter: CV = 0.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5CounterOps, S5CounterRef, S5CounterState};
+    /// assert_eq!(S5CounterRef::new().state(), S5CounterState::RESET);
+    /// ```
     pub const fn new() -> S5CounterRef {
         S5CounterRef {
             state: S5CounterState::RESET,
@@ -29,6 +32,12 @@ impl S5CounterRef {
     }
 
     /// The counter in `state`, or `None` when CV is above 999.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5CounterRef, S5CounterState};
+    /// assert!(S5CounterRef::from_state(S5CounterState { cv: 999, ..S5CounterState::RESET }).is_some());
+    /// assert!(S5CounterRef::from_state(S5CounterState { cv: 1000, ..S5CounterState::RESET }).is_none());
+    /// ```
     pub const fn from_state(state: S5CounterState) -> Option<S5CounterRef> {
         if state.is_valid() {
             Some(S5CounterRef { state })
