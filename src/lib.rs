@@ -21,7 +21,7 @@
 //! | [`counter::s5`] counters (`S_CU`, `S_CD`, `S_CUD`) | [`counter::s5::S5CounterOps`] | [`counter::s5::S5CounterRef`] | [`counter::s5::S5Counter`] | [`counter::s5::CounterMemory`] |
 //!
 //! Every timer call takes the CPU time it runs at, a [`time::CpuTime`]: `call(kind, now, input)`;
-//! every counter call `call(kind, input)`. [`time`] has the S5TIME word and IEC `TIME` with their
+//! every counter call `call(kind, input)`. [`mod@time`] has the S5TIME word and IEC `TIME` with their
 //! literals; [`catalog`] names every block with its inputs and outputs.
 //!
 //! ## Quick start, per family

@@ -91,7 +91,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 
     /// The structure holding `state`, or `None` if `state` violates [`IecState::is_valid`].
-    /// The inverse of [`IecTimerOf::abstraction`].
+    /// The inverse of [`IecTimerOps::state`].
     pub fn from_state(state: IecState<C>) -> Option<IecTimerOf<C>> {
         if !state.is_valid() {
             return None;
