@@ -58,6 +58,7 @@ impl Time {
     }
 
     /// `self + rhs`, or `None` when the sum leaves the TIME range (TIME-ARITH-01).
+    #[must_use = "the result is the new TIME; the value itself is unchanged"]
     pub const fn checked_add(self, rhs: Time) -> Option<Time> {
         match self.0.checked_add(rhs.0) {
             Some(v) => Some(Time(v)),
@@ -66,6 +67,7 @@ impl Time {
     }
 
     /// `self - rhs`, or `None` when the difference leaves the TIME range (TIME-ARITH-01).
+    #[must_use = "the result is the new TIME; the value itself is unchanged"]
     pub const fn checked_sub(self, rhs: Time) -> Option<Time> {
         match self.0.checked_sub(rhs.0) {
             Some(v) => Some(Time(v)),
@@ -80,17 +82,20 @@ impl Time {
     /// assert_eq!(Time::MAX.saturating_add(Time::from_millis(1)), Time::MAX);
     /// assert_eq!(Time::from_millis(-5).saturating_add(Time::from_millis(7)).as_millis(), 2);
     /// ```
+    #[must_use = "the result is the new TIME; the value itself is unchanged"]
     pub const fn saturating_add(self, rhs: Time) -> Time {
         Time(self.0.saturating_add(rhs.0))
     }
 
     /// `self - rhs`, clamped to [`Time::MIN`]`..=`[`Time::MAX`] (TIME-ARITH-01).
+    #[must_use = "the result is the new TIME; the value itself is unchanged"]
     pub const fn saturating_sub(self, rhs: Time) -> Time {
         Time(self.0.saturating_sub(rhs.0))
     }
 
     /// `-self`, or `None` for [`Time::MIN`], whose negation is one past [`Time::MAX`]
     /// (TIME-ARITH-01).
+    #[must_use = "the result is the new TIME; the value itself is unchanged"]
     pub const fn checked_neg(self) -> Option<Time> {
         match self.0.checked_neg() {
             Some(v) => Some(Time(v)),

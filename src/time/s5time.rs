@@ -282,6 +282,7 @@ impl S5Time {
     /// assert_eq!(t.to_automatic().to_word(), 0x0100);
     /// # Ok::<(), plc_timers::time::S5TimeError>(())
     /// ```
+    #[must_use]
     pub const fn to_automatic(self) -> S5Time {
         match S5Time::from_millis(self.as_millis() as u64) {
             Ok(t) => t,
