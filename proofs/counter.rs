@@ -7,13 +7,14 @@
 //! unsigned, so both saturation ends and the sign of `CV <= 0`), and proptest and the Kani
 //! harnesses the wide types.
 
-use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
-use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterMemory, CounterPreset, S5CounterCell, S5CounterInput, S5CounterKind, S5CounterRef,
-    S5CounterState, CV_MAX,
+    CounterMemory, CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps,
+    S5CounterRef, S5CounterState, CV_MAX,
 };
-use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterState};
+use plc_timers::counter::{
+    BankInputs, Counter, CounterBank, CounterInput, CounterInt, CounterKind, CounterOps,
+    CounterRef, CounterState,
+};
 use proptest::prelude::*;
 
 /// CNT-EQUIV-01: one packed step equals one reference step, state and outputs.
@@ -22,41 +23,20 @@ pub fn prop_step_equivalence<T: CounterInt>(
     state: CounterState<T>,
     input: CounterInput<T>,
 ) {
-    let mut r = CounterRef { kind, state };
-    let mut p = PackedCounter::from_state(state);
+    let mut r = CounterRef::from_state(state);
+    let mut p = Counter::from_state(state);
     assert_eq!(
-        p.abstraction(),
+        p.state(),
         state,
         "CNT-EQUIV-01: abstraction inverts from_state"
     );
-    let ro = r.call(input);
-    // Through the interface, the instruction named in the call is the one that runs.
-    let mut via_trait = CounterRef {
-        kind: CounterKind::Ctud,
-        state,
-    };
-    assert_eq!(
-        CounterOps::call(&mut via_trait, kind, input),
-        ro,
-        "CNT-EQUIV-01 via CounterOps"
-    );
+    let ro = r.call(kind, input);
     let po = p.call(kind, input);
     assert_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
-    // The interface's view and the accessor read the same state, in both implementations.
-    assert_eq!(
-        CounterOps::state(&p),
-        p.abstraction(),
-        "CNT-EQUIV-01 via CounterOps"
-    );
-    assert_eq!(
-        CounterOps::state(&r),
-        r.state,
-        "CNT-EQUIV-01 reference via CounterOps"
-    );
     assert_eq!(p.cv(), po.cv, "CNT-EQUIV-01: CV accessor");
     assert_eq!(
-        p.abstraction(),
-        r.state,
+        p.state(),
+        r.state(),
         "CNT-EQUIV-01 state {kind:?} {state:?} {input:?}"
     );
 }
@@ -69,26 +49,30 @@ pub fn prop_rules<T: CounterInt>(
     state: CounterState<T>,
     input: CounterInput<T>,
 ) {
-    let mut r = CounterRef { kind, state };
-    let out = r.call(input);
+    let mut r = CounterRef::from_state(state);
+    let out = r.call(kind, input);
     let i = input.with_signals(kind.mask(input.signals()));
-    let (before, after) = (state.cv.to_i128(), r.state.cv.to_i128());
+    let (before, after) = (state.cv.to_i128(), r.state().cv.to_i128());
     assert_eq!(
         (out.qu, out.qd, out.cv),
-        (r.state.cv >= input.pv, r.state.cv <= T::ZERO, r.state.cv),
+        (
+            r.state().cv >= input.pv,
+            r.state().cv <= T::ZERO,
+            r.state().cv
+        ),
         "CNT-Q-01"
     );
     assert_eq!(
-        (r.state.cu_prev, r.state.cd_prev),
+        (r.state().cu_prev, r.state().cd_prev),
         (i.cu, i.cd),
         "CNT-EDGE-01: edge memories take the inputs"
     );
     if i.r {
-        assert_eq!(r.state.cv, T::ZERO, "CNT-PRIO-01: R resets");
+        assert_eq!(r.state().cv, T::ZERO, "CNT-PRIO-01: R resets");
         return;
     }
     if i.ld {
-        assert_eq!(r.state.cv, input.pv, "CNT-PRIO-01: LD loads PV");
+        assert_eq!(r.state().cv, input.pv, "CNT-PRIO-01: LD loads PV");
         return;
     }
     let up = i.cu && !state.cu_prev;
@@ -226,77 +210,119 @@ proptest! {
         prop_rules(d.0, d.1, d.2);
     }
 
-    /// CNT-BANK-01: a bank of 128 CTUD counters (two words) over 12 scans of random inputs
-    /// equals 128 reference counters.
+    /// CNT-EQUIV-01: a bank of 64 CTUD counters over 12 scans of random inputs equals 64
+    /// reference counters.
     #[test]
     fn proptest_bank_equals_reference(
-        scans in prop::collection::vec(any::<[[u64; 2]; 4]>(), 12),
+        scans in prop::collection::vec(any::<[u64; 4]>(), 12),
         pv in arb_wide::<i16>(),
     ) {
-        let mut bank = CounterBank::<i16, 2>::new();
-        let mut refs = vec![CounterRef::<i16>::new(CounterKind::Ctud); 128];
-        // Two words of 64: counters 0..=127 exist, 128 does not.
-        prop_assert_eq!(CounterBank::<i16, 2>::LEN, refs.len());
-        prop_assert_eq!(bank.state(128), None);
-        for [cu, cd, r, ld] in scans {
-            // Thin out R and LD so that counting is exercised too.
-            let r = [r[0] & cu[0] & cd[0], r[1] & cu[1] & cd[1]];
-            let ld = [ld[0] & !cu[0] & cd[0], ld[1] & !cu[1] & cd[1]];
-            bank.scan(BankInputs { cu: &cu, cd: &cd, r: &r, ld: &ld }, pv);
-            for (i, c) in refs.iter_mut().enumerate() {
-                let bit = |w: &[u64; 2]| w[i / 64] >> (i % 64) & 1 != 0;
-                let o = c.call(CounterInput { cu: bit(&cu), cd: bit(&cd), r: bit(&r), ld: bit(&ld), pv });
-                prop_assert_eq!(bank.state(i), Some(c.state), "CNT-BANK-01 counter {}", i);
-                prop_assert_eq!(bank.output(i, pv), Some(o));
-            }
+        prop_bank::<i16, 64>(&scans, pv);
+    }
+}
+
+/// CNT-EQUIV-01 (the bank): a bank of `N` CTUD counters scanned with the input bits `scans`
+/// (bit `i` of each word is counter `i`'s CU, CD, R, LD) equals `N` reference counters.
+pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
+    let mut bank = CounterBank::<T, N>::new();
+    let mut refs = [CounterRef::<T>::new(); N];
+    assert_eq!(bank.get(N), None, "counter {N} does not exist");
+    for &[cu, cd, r, ld] in scans {
+        // Thin out R and LD so that counting is exercised too.
+        let (r, ld) = (r & cu & cd, ld & !cu & cd);
+        let bits = |w: u64| -> [bool; N] { core::array::from_fn(|i| w >> (i % 64) & 1 != 0) };
+        let (bcu, bcd, br, bld) = (bits(cu), bits(cd), bits(r), bits(ld));
+        bank.scan(
+            &BankInputs {
+                cu: &bcu,
+                cd: &bcd,
+                r: &br,
+                ld: &bld,
+            },
+            pv,
+        );
+        for (i, c) in refs.iter_mut().enumerate() {
+            let o = c.call(
+                CounterKind::Ctud,
+                CounterInput {
+                    cu: bcu[i],
+                    cd: bcd[i],
+                    r: br[i],
+                    ld: bld[i],
+                    pv,
+                },
+            );
+            assert_eq!(
+                bank.get(i),
+                Some(c.state()),
+                "CNT-EQUIV-01 bank counter {i}"
+            );
+            assert_eq!(bank.output(i, pv), Some(o), "CNT-EQUIV-01 bank output {i}");
         }
     }
 }
 
-/// SC-EQUIV-01: one packed S5 counter step equals one reference step.
+/// The CU, CD and S edge memories as the operations after FR see them: a rising FR clears
+/// them (SC-FR-01).
+pub fn s5_memories_after_fr(state: &S5CounterState, fr: bool) -> (bool, bool, bool) {
+    let clear = fr && !state.fr_prev;
+    (
+        state.cu_prev && !clear,
+        state.cd_prev && !clear,
+        state.s_prev && !clear,
+    )
+}
+
+/// CNT-EQUIV-01 (S5 counters): one packed S5 counter step equals one reference step, and the
+/// counter memory area's box call equals both.
 pub fn prop_s5_step_equivalence(
     kind: S5CounterKind,
     state: S5CounterState,
     input: S5CounterInput,
 ) -> bool {
-    let Some(cell) = S5CounterCell::from_state(state) else {
+    let Some(word) = S5Counter::from_state(state) else {
         return false;
     };
     assert_eq!(
-        cell.abstraction(),
+        word.state(),
         state,
-        "SC-EQUIV-01: abstraction inverts from_state"
+        "CNT-EQUIV-01: abstraction inverts from_state"
     );
-    let mut r = S5CounterRef { kind, state };
-    let ro = r.call(input);
-    let cell = cell.step(kind.mask(input));
+    let mut r = S5CounterRef::from_state(state).expect("valid");
+    let ro = r.call(kind, input);
+    let word = word.execute(kind, input);
     assert_eq!(
-        cell.abstraction(),
-        r.state,
-        "SC-EQUIV-01 {kind:?} {state:?} {input:?}"
+        word.state(),
+        r.state(),
+        "CNT-EQUIV-01 S5 {kind:?} {state:?} {input:?}"
     );
-    assert_eq!(cell.output(), ro, "SC-EQUIV-01 outputs");
+    assert_eq!(word.output(), ro, "CNT-EQUIV-01 S5 outputs");
+    let mut area = CounterMemory::<2>::new();
+    assert_eq!(area.set_state(1, state), Ok(true));
+    assert_eq!(area.call(1, kind, input), Ok(ro), "CNT-EQUIV-01 S5 area");
+    assert_eq!(area.get(1), Ok(r.state()), "CNT-EQUIV-01 S5 area state");
     true
 }
 
 /// SC-RANGE-01, SC-Q-01, SC-PRIO-01: CV stays in 0..=999, CV_BCD is its BCD form, Q = CV != 0,
-/// R = 1 gives 0, a rising S (without R) gives PV.
+/// R = 1 gives 0, a rising S (without R) gives PV, counting moves CV by at most one.
 pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5CounterInput) -> bool {
     if !state.is_valid() {
         return false;
     }
-    let mut r = S5CounterRef { kind, state };
-    let out = r.call(input);
+    let mut r = S5CounterRef::from_state(state).expect("valid");
+    let out = r.call(kind, input);
+    let (_, _, s_prev) = s5_memories_after_fr(&state, input.fr);
     assert!(out.cv <= CV_MAX, "SC-RANGE-01");
     assert_eq!(
         CounterPreset::from_bcd(out.cv_bcd).map(CounterPreset::value),
         Ok(out.cv),
-        "SC-BCD-01"
+        "SC-RANGE-01: CV_BCD"
     );
     assert_eq!(out.q, out.cv != 0, "SC-Q-01");
     if input.r {
         assert_eq!(out.cv, 0, "SC-PRIO-01: R resets");
-    } else if input.s && !state.s_prev {
+    } else if input.s && !s_prev {
         assert_eq!(out.cv, input.pv.value(), "SC-PRIO-01: a rising S sets PV");
     } else {
         assert!(
@@ -307,9 +333,7 @@ pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5Counte
     true
 }
 
-/// Exhaustive S5 counters: 3 kinds x CV 0..=999 x 8 edge memories x 16 inputs x 5 presets
-/// (1.9 million); the preset only matters on a rising S, where it is copied (checked by
-/// `prop_s5_rules` for each), so five values incl. both ends suffice.
+/// Exhaustive S5 counters: 3 kinds x CV 0..=999 x 16 edge memories x 32 inputs x 5 presets.
 #[test]
 fn exhaustive_s5_counters() {
     let mut checked = 0;
@@ -319,20 +343,22 @@ fn exhaustive_s5_counters() {
         .collect();
     for kind in S5CounterKind::ALL {
         for cv in 0..=CV_MAX {
-            for e in 0..8u8 {
+            for e in 0..16u8 {
                 let state = S5CounterState {
                     cv,
                     cu_prev: e & 1 != 0,
                     cd_prev: e & 2 != 0,
                     s_prev: e & 4 != 0,
+                    fr_prev: e & 8 != 0,
                 };
                 for &pv in &presets {
-                    for bits in 0..16u8 {
+                    for bits in 0..32u8 {
                         let input = S5CounterInput {
                             cu: bits & 1 != 0,
                             cd: bits & 2 != 0,
                             s: bits & 4 != 0,
                             r: bits & 8 != 0,
+                            fr: bits & 16 != 0,
                             pv,
                         };
                         checked += u32::from(prop_s5_step_equivalence(kind, state, input));
@@ -342,14 +368,14 @@ fn exhaustive_s5_counters() {
             }
         }
     }
-    // Every enumerated state is valid: both properties apply to every case.
-    assert_eq!(checked, 2 * 3 * 1000 * 8 * presets.len() as u32 * 16);
-    assert_eq!(presets.len(), 5);
+    assert_eq!(checked, 2 * 3 * 1000 * 16 * presets.len() as u32 * 32);
 }
 
-/// One STL operation on an S5 counter: `CU`, `CD`, `S` or `R C n` with its RLO.
+/// One STL operation on an S5 counter: `FR`, `CU`, `CD`, `S` or `R C n` with its RLO.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StlOp {
+    /// `FR C n`.
+    Fr(bool),
     /// `CU C n` (`ZV`).
     Cu(bool),
     /// `CD C n` (`ZR`).
@@ -360,54 +386,83 @@ pub enum StlOp {
     R(bool),
 }
 
-/// SC-STL-01: each STL operation evaluates only its own input. The model is the reference box
-/// called once per operation with every input line at the RLO its own operation last gave it
-/// (so a line that did not change shows no edge) and R at the RLO of this operation if it is
-/// `R C n`, else 0 (R acts only where it is programmed). The counter memory area's operations
-/// must give the same CV, BCD and status after every operation, from the initial counter.
+/// SC-STL-01: the counter memory area's STL operations equal the reference's operations, and
+/// each evaluates only its own input: its edge memory takes the RLO, the others are untouched
+/// except where the operation's own rule clears them (FR: all three; S: CU and CD).
 pub fn prop_stl_operations(pv: CounterPreset, ops: &[StlOp]) {
-    let mut reference = S5CounterRef::new(S5CounterKind::SCud);
+    let mut reference = S5CounterRef::new();
     let mut area = CounterMemory::<1>::new();
-    let mut lines = S5CounterInput {
-        pv,
-        ..S5CounterInput::default()
-    };
     for (n, &op) in ops.iter().enumerate() {
-        lines.r = false;
+        let before = reference.state();
         let done = match op {
+            StlOp::Fr(rlo) => {
+                reference.enable(rlo);
+                area.fr(0, rlo)
+            }
             StlOp::Cu(rlo) => {
-                lines.cu = rlo;
+                reference.count_up(rlo);
                 area.cu(0, rlo)
             }
             StlOp::Cd(rlo) => {
-                lines.cd = rlo;
+                reference.count_down(rlo);
                 area.cd(0, rlo)
             }
             StlOp::S(rlo) => {
-                lines.s = rlo;
+                reference.set(rlo, pv);
                 area.set(0, rlo, pv)
             }
             StlOp::R(rlo) => {
-                lines.r = rlo;
+                reference.reset(rlo);
                 area.reset(0, rlo)
             }
         };
         assert_eq!(done, Ok(()), "counter 0 exists");
-        let expected = reference.call(lines);
+        let after = reference.state();
+        assert_eq!(
+            area.get(0),
+            Ok(after),
+            "SC-STL-01 area after operation {n} of {ops:?}"
+        );
+        let expected = after.output();
         assert_eq!(
             (area.load(0), area.load_bcd(0), area.status(0)),
             (Ok(expected.cv), Ok(expected.cv_bcd), Ok(expected.q)),
-            "SC-STL-01 after operation {n} of {ops:?}"
+            "SC-STL-01 reads after operation {n} of {ops:?}"
         );
+        let memories = |s: &S5CounterState| [s.cu_prev, s.cd_prev, s.s_prev, s.fr_prev];
+        let (b, a) = (memories(&before), memories(&after));
+        let own = match op {
+            StlOp::Cu(_) => 0,
+            StlOp::Cd(_) => 1,
+            StlOp::S(_) => 2,
+            StlOp::Fr(_) => 3,
+            StlOp::R(_) => 4,
+        };
+        for k in 0..4 {
+            if k == own {
+                continue;
+            }
+            let cleared = match op {
+                StlOp::Fr(rlo) => rlo && !before.fr_prev,
+                StlOp::S(rlo) => k < 2 && rlo && !before.s_prev,
+                _ => false,
+            };
+            let expect = if cleared { false } else { b[k] };
+            assert_eq!(
+                a[k], expect,
+                "SC-STL-01: memory {k} after {op:?} at {n} of {ops:?}"
+            );
+        }
     }
 }
 
-/// SC-STL-01 driver: every sequence of 5 operations over the 8 (operation, RLO) pairs (32 768
-/// sequences), with the presets 0, 1 and 999: reaches counting from both sides of the edge
-/// memories, set, reset, and the count after each.
+/// SC-STL-01 driver: every sequence of 5 operations over the 10 (operation, RLO) pairs
+/// (100 000 sequences), with the presets 0, 1 and 999.
 #[test]
 fn exhaustive_stl_operations() {
-    const SYMBOLS: [StlOp; 8] = [
+    const SYMBOLS: [StlOp; 10] = [
+        StlOp::Fr(false),
+        StlOp::Fr(true),
         StlOp::Cu(false),
         StlOp::Cu(true),
         StlOp::Cd(false),
@@ -420,17 +475,17 @@ fn exhaustive_stl_operations() {
     let mut sequences = 0;
     for pv in [0, 1, 999] {
         let pv = CounterPreset::new(pv).expect("at most 999");
-        for mut code in 0..8usize.pow(5) {
+        for mut code in 0..10usize.pow(5) {
             let mut ops = [StlOp::Cu(false); 5];
             for op in ops.iter_mut() {
-                *op = SYMBOLS[code % 8];
-                code /= 8;
+                *op = SYMBOLS[code % 10];
+                code /= 10;
             }
             prop_stl_operations(pv, &ops);
             sequences += 1;
         }
     }
-    assert_eq!(sequences, 3 * 32_768);
+    assert_eq!(sequences, 3 * 100_000);
 }
 
 /// SC-BCD-01, exhaustive over all 65 536 words: a preset word is accepted exactly when it is
@@ -452,57 +507,4 @@ fn exhaustive_s5_preset_words() {
         }
     }
     assert_eq!(accepted, 1000);
-}
-
-#[cfg(kani)]
-mod kani_harnesses {
-    use super::*;
-
-    macro_rules! wide_harness {
-        ($name:ident, $t:ty) => {
-            /// CNT-EQUIV-01 and the counter rules for every state and input of this type.
-            #[kani::proof]
-            fn $name() {
-                let kind: CounterKind = kani::any();
-                let state: CounterState<$t> = kani::any();
-                let input: CounterInput<$t> = kani::any();
-                prop_step_equivalence(kind, state, input);
-                prop_rules(kind, state, input);
-            }
-        };
-    }
-
-    wide_harness!(kani_counter_sint, i8);
-    wide_harness!(kani_counter_int, i16);
-    wide_harness!(kani_counter_dint, i32);
-    wide_harness!(kani_counter_lint, i64);
-    wide_harness!(kani_counter_usint, u8);
-    wide_harness!(kani_counter_uint, u16);
-    wide_harness!(kani_counter_udint, u32);
-    wide_harness!(kani_counter_ulint, u64);
-
-    /// SC-EQUIV-01 and the S5 counter rules for every state and input.
-    #[kani::proof]
-    fn kani_s5_counter() {
-        let cv: u16 = kani::any();
-        kani::assume(cv <= CV_MAX);
-        let state = S5CounterState {
-            cv,
-            cu_prev: kani::any(),
-            cd_prev: kani::any(),
-            s_prev: kani::any(),
-        };
-        let pv = CounterPreset::new(kani::any::<u16>() % 1000).unwrap_or_default();
-        let input = S5CounterInput {
-            cu: kani::any(),
-            cd: kani::any(),
-            s: kani::any(),
-            r: kani::any(),
-            pv,
-        };
-        let kind: S5CounterKind = kani::any();
-        let checked = prop_s5_step_equivalence(kind, state, input);
-        kani::cover!(checked, "the premise is reachable");
-        prop_s5_rules(kind, state, input);
-    }
 }

@@ -10,11 +10,9 @@
 
 use std::thread;
 
-use plc_timers::iec::bank::TonBank;
-use plc_timers::iec::reference::Reference;
-use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps};
+use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef, TonBank};
 use plc_timers::time::clock::ClockWord;
-use plc_timers::time::Time;
+use plc_timers::time::{CpuTime, Time};
 use proptest::prelude::*;
 
 /// A 4-bit wrapping clock, for exhaustive enumeration.
@@ -23,6 +21,7 @@ pub struct U4(u8);
 
 impl ClockWord for U4 {
     const BITS: u32 = 4;
+    const ZERO: Self = U4(0);
     const MAX: Self = U4(15);
     fn elapsed_since(self, earlier: Self) -> Self {
         U4(self.0.wrapping_sub(earlier.0) & 15)
@@ -43,13 +42,13 @@ impl ClockWord for U4 {
 
 /// One operation on a timer structure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Op<C> {
+pub enum Op {
     /// A box call.
-    Call(IecKind, C, IecInput),
+    Call(IecKind, CpuTime, IecInput),
     /// Reading `Q` through the structure at a time.
-    ReadQ(C),
+    ReadQ(CpuTime),
     /// Reading `ELAPSED` through the structure at a time.
-    ReadEt(C),
+    ReadEt(CpuTime),
     /// The RT coil.
     Rt,
     /// The PT coil.
@@ -58,7 +57,7 @@ pub enum Op<C> {
     RunStopRun(bool),
 }
 
-fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op<C>) -> (bool, C) {
+fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op) -> (bool, C) {
     match op {
         Op::Call(kind, now, input) => {
             let o = t.call(kind, now, input);
@@ -86,32 +85,32 @@ fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op<C>) -> (bool, C) {
 
 /// IEC-EQUIV-01: for every valid state and operation, the structure's result and its state
 /// mapped through the abstraction function equal the reference's.
-pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) -> bool {
+pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     let Some(mut opt) = IecTimerOf::from_state(state) else {
         return false;
     };
     assert_eq!(
-        opt.abstraction(),
+        opt.state(),
         state,
         "IEC-EQUIV-01: abstraction inverts from_state"
     );
-    let mut r = Reference { state };
+    let mut r = IecTimerRef::from_state(state).expect("valid");
     let ro = apply(&mut r, op);
     let oo = apply(&mut opt, op);
     assert_eq!(oo, ro, "IEC-EQUIV-01 outputs {state:?} {op:?}");
     assert_eq!(
-        opt.abstraction(),
-        r.state,
+        opt.state(),
+        r.state(),
         "IEC-EQUIV-01 state {state:?} {op:?}"
     );
     // Equal states are equal bytes: the structure is exactly the encoding of the reference
     // state (no stray flag bits, no stale START), and its accessors read the same members.
     assert_eq!(
-        IecTimerOf::from_state(r.state),
+        IecTimerOf::from_state(r.state()),
         Some(opt),
         "IEC-EQUIV-01 canonical bytes {state:?} {op:?}"
     );
-    assert_eq!((opt.pt(), opt.et()), (r.state.pt, r.state.et));
+    assert_eq!((opt.pt(), opt.et()), (r.state().pt, r.state().et));
     true
 }
 
@@ -119,26 +118,26 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op<C>) -> boo
 /// structure mapped through the abstraction function with the reference state, and the
 /// validity invariant. `step` and `ops` only name the step in the failure message.
 fn sequence_step<C: ClockWord>(
-    r: &mut Reference<C>,
+    r: &mut IecTimerRef<C>,
     opt: &mut IecTimerOf<C>,
-    op: Op<C>,
+    op: Op,
     step: usize,
-    ops: &[Op<C>],
+    ops: &[Op],
 ) {
     let ro = apply(r, op);
     let oo = apply(opt, op);
     assert_eq!(oo, ro, "IEC-EQUIV-02 outputs at step {step} of {ops:?}");
     assert_eq!(
-        opt.abstraction(),
-        r.state,
+        opt.state(),
+        r.state(),
         "IEC-EQUIV-02 state at step {step} of {ops:?}"
     );
     assert!(
-        opt.is_valid() && r.state.is_valid(),
+        opt.state().is_valid() && r.state().is_valid(),
         "IEC-ET-RANGE-01 at step {step} of {ops:?}"
     );
     assert_eq!(
-        IecTimerOf::from_state(r.state),
+        IecTimerOf::from_state(r.state()),
         Some(*opt),
         "IEC-EQUIV-02 canonical bytes at step {step} of {ops:?}"
     );
@@ -147,10 +146,10 @@ fn sequence_step<C: ClockWord>(
 /// IEC-EQUIV-02: from the initial structure, every sequence of operations gives the same
 /// outputs and (through the abstraction function) the same states in the reference and the
 /// 16-byte structure, and every state on the way is valid.
-pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op<C>]) {
-    let mut r = Reference::<C>::new();
+pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op]) {
+    let mut r = IecTimerRef::<C>::new();
     let mut opt = IecTimerOf::<C>::new();
-    assert_eq!(opt.abstraction(), r.state, "IEC-EQUIV-02 initial state");
+    assert_eq!(opt.state(), r.state(), "IEC-EQUIV-02 initial state");
     for (i, &op) in ops.iter().enumerate() {
         sequence_step(&mut r, &mut opt, op, i, ops);
     }
@@ -160,13 +159,13 @@ pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op<C>]) {
 /// latched, non-negative preset); after RT, ET = 0 and Q = 0 and the timer is stopped; a stopped
 /// timer starts only on its starting edge (rising IN for TP and TON, falling IN for TOF; for
 /// TONR, IN = 1 with R = 0, the decision TONR-RESUME-01).
-pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) -> bool {
+pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     if !state.is_valid() {
         return false;
     }
-    let mut r = Reference { state };
+    let mut r = IecTimerRef::from_state(state).expect("valid");
     let (q, et) = apply(&mut r, op);
-    let after = r.state;
+    let after = r.state();
     // Stated here rather than through `IecState::is_valid`, so that the property does not
     // trust the predicate it is meant to check.
     assert!(
@@ -220,7 +219,7 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op<C>) -> bool {
 pub fn prop_table_8_20<C: ClockWord>(
     state: IecState<C>,
     kind: IecKind,
-    now: C,
+    now: CpuTime,
     input: IecInput,
     other_pt: Time,
 ) -> bool {
@@ -235,14 +234,14 @@ pub fn prop_table_8_20<C: ClockWord>(
         || !state.running
         || state.kind != Some(kind)
         || !stored_in_consistent
-        || now.elapsed_since(state.start) >= state.pt
+        || now.clock::<C>().elapsed_since(state.start) >= state.pt
     {
         return false;
     }
     let step = |input: IecInput| {
-        let mut r = Reference { state };
+        let mut r = IecTimerRef::from_state(state).expect("valid");
         let o = r.call(kind, now, input);
-        (o, r.state)
+        (o, r.state())
     };
     let (o, after) = step(input);
     assert_eq!(
@@ -272,7 +271,7 @@ pub fn prop_table_8_20<C: ClockWord>(
             assert!(!after.running && o.q && o.et == C::default(), "TOF-IN-01");
         }
         IecKind::Tonr if !input.input && !input.reset => {
-            let accumulated = now.elapsed_since(state.start);
+            let accumulated = now.clock::<C>().elapsed_since(state.start);
             assert!(
                 !after.running && o.et == accumulated,
                 "TONR-IN-01: stops, ET keeps the accumulated time"
@@ -324,7 +323,7 @@ const PTS: [i32; 8] = [-1, 0, 1, 5, 14, 15, 16, i32::MAX];
 
 /// Every operation on the 4-bit clock: calls of each kind at every `now` with every IN (and R
 /// for TONR) and PT of `PTS`; reads at every `now`; RT; PT coil with every PT; RUN-STOP-RUN.
-pub fn all_ops_u4() -> Vec<Op<U4>> {
+pub fn all_ops_u4() -> Vec<Op> {
     let mut ops = Vec::new();
     for kind in IecKind::ALL {
         for now in 0..16u8 {
@@ -336,7 +335,7 @@ pub fn all_ops_u4() -> Vec<Op<U4>> {
                     for pt in PTS {
                         ops.push(Op::Call(
                             kind,
-                            U4(now),
+                            CpuTime::from_millis(u64::from(now)),
                             IecInput {
                                 input,
                                 pt: Time::from_millis(pt),
@@ -349,8 +348,8 @@ pub fn all_ops_u4() -> Vec<Op<U4>> {
         }
     }
     for now in 0..16u8 {
-        ops.push(Op::ReadQ(U4(now)));
-        ops.push(Op::ReadEt(U4(now)));
+        ops.push(Op::ReadQ(CpuTime::from_millis(u64::from(now))));
+        ops.push(Op::ReadEt(CpuTime::from_millis(u64::from(now))));
     }
     ops.push(Op::Rt);
     ops.extend(PTS.map(|pt| Op::PtCoil(Time::from_millis(pt))));
@@ -404,15 +403,15 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
 /// `now` in {0, 2, 7, 14} (so that a START of 14 followed by `now` = 2 crosses the wrap) with
 /// every IN (and R for TONR) and PT in {-1, 0, 5, 15}; reads of Q and ELAPSED at 2 and 14; RT;
 /// the PT coil with 5; RUN-STOP-RUN both ways: 168 operations.
-fn sequence_ops_u4() -> Vec<Op<U4>> {
+fn sequence_ops_u4() -> Vec<Op> {
     let pts = [-1, 0, 5, 15];
     all_ops_u4()
         .into_iter()
         .filter(|op| match *op {
             Op::Call(_, now, input) => {
-                [0, 2, 7, 14].contains(&now.0) && pts.contains(&input.pt.as_millis())
+                [0, 2, 7, 14].contains(&now.as_millis()) && pts.contains(&input.pt.as_millis())
             }
-            Op::ReadQ(now) | Op::ReadEt(now) => now.0 == 2 || now.0 == 14,
+            Op::ReadQ(now) | Op::ReadEt(now) => now.as_millis() == 2 || now.as_millis() == 14,
             Op::PtCoil(pt) => pt.as_millis() == 5,
             Op::Rt | Op::RunStopRun(_) => true,
         })
@@ -422,10 +421,10 @@ fn sequence_ops_u4() -> Vec<Op<U4>> {
 /// Depth-first over every sequence of `depth` more operations from `alphabet`, checking each
 /// step as [`prop_sequence_equivalence`] does; returns the number of steps checked.
 fn sequences_from(
-    r: &Reference<U4>,
+    r: &IecTimerRef<U4>,
     opt: &IecTimerOf<U4>,
-    alphabet: &[Op<U4>],
-    prefix: &mut Vec<Op<U4>>,
+    alphabet: &[Op],
+    prefix: &mut Vec<Op>,
     depth: usize,
 ) -> u64 {
     if depth == 0 {
@@ -451,7 +450,7 @@ fn bounded_sequences_u4_from_initial_state() {
     let alphabet = sequence_ops_u4();
     assert_eq!(alphabet.len(), 168);
     let steps = sequences_from(
-        &Reference::new(),
+        &IecTimerRef::new(),
         &IecTimerOf::new(),
         &alphabet,
         &mut Vec::new(),
@@ -491,7 +490,7 @@ fn exhaustive_u8_update_every_start_now_pt() {
                                 for now in 0..=255u8 {
                                     let op = Op::Call(
                                         kind,
-                                        now,
+                                        CpuTime::from_millis(u64::from(now)),
                                         IecInput::new(input, Time::from_millis(5)),
                                     );
                                     n += u64::from(prop_step_equivalence(state, op));
@@ -548,8 +547,14 @@ fn arb_state_u32() -> impl Strategy<Value = IecState<u32>> {
         })
 }
 
-fn arb_op_u32() -> impl Strategy<Value = Op<u32>> {
-    let now = prop_oneof![any::<u32>(), (u32::MAX - 1000)..=u32::MAX, 0u32..1000];
+fn arb_op_u32() -> impl Strategy<Value = Op> {
+    let now = prop_oneof![
+        any::<u32>().prop_map(u64::from),
+        ((u32::MAX - 1000)..=u32::MAX).prop_map(u64::from),
+        (0u64..1000),
+        any::<u64>(),
+    ]
+    .prop_map(CpuTime::from_millis);
     let pt = prop_oneof![any::<i32>(), Just(i32::MAX), Just(0), Just(-1), 0i32..2000];
     prop_oneof![
         4 => (arb_kind(), now.clone(), any::<bool>(), any::<bool>(), pt.clone())
@@ -582,37 +587,36 @@ proptest! {
     /// kind, reads, coils, RUN-STOP-RUN) from the initial structure, times near the wrap.
     #[test]
     fn proptest_u32_sequences_from_initial_state(ops in prop::collection::vec(arb_op_u32(), 1..40)) {
-        prop_sequence_equivalence(&ops);
+        prop_sequence_equivalence::<u32>(&ops);
     }
 }
 
-/// IEC-BANK-01: a TON bank scanned with the IN bits `inputs` and presets `pt` at the times
-/// `start + steps[..k]` equals one reference TON per bit, called once per scan.
-pub fn prop_ton_bank(start: u32, steps: &[u32], inputs: &[[u64; 2]], pts: &[i32; 128]) {
-    let mut pt = [[Time::ZERO; 64]; 2];
-    for (i, &p) in pts.iter().enumerate() {
-        pt[i / 64][i % 64] = Time::from_millis(p);
-    }
-    let mut bank = TonBank::<2>::new();
-    let mut refs = vec![Reference::<u32>::new(); 128];
-    // Two words of 64: timers 0..=127 exist, 128 does not.
+/// IEC-BANK-01: a TON bank of `N` timers scanned with the IN bits `inputs[k]` and presets `pts`
+/// at the times `start + steps[..=k]` equals one reference TON per timer, called once per scan.
+pub fn prop_ton_bank<const N: usize>(
+    start: u64,
+    steps: &[u64],
+    inputs: &[[bool; N]],
+    pts: &[Time; N],
+) {
+    let mut bank = TonBank::<N>::new();
+    let mut refs = [IecTimerRef::<u32>::new(); N];
     assert_eq!(
-        TonBank::<2>::LEN,
-        refs.len(),
-        "IEC-BANK-01: 64 timers per word"
+        bank.output(N),
+        None,
+        "IEC-BANK-01: timer {N} does not exist"
     );
-    assert_eq!(bank.output(TonBank::<2>::LEN), None);
-    let mut now = start;
+    let mut now = CpuTime::from_millis(start);
     for (dt, input) in steps.iter().zip(inputs) {
-        now = now.wrapping_add(*dt);
-        bank.scan(now, input, &pt);
+        now = now.add_millis(*dt);
+        bank.scan(now, input, pts);
         for (i, r) in refs.iter_mut().enumerate() {
-            let bit = input[i / 64] >> (i % 64) & 1 != 0;
-            let o = r.call(IecKind::Ton, now, IecInput::new(bit, pt[i / 64][i % 64]));
+            let o = r.call(IecKind::Ton, now, IecInput::new(input[i], pts[i]));
+            assert_eq!(bank.output(i), Some(o), "IEC-BANK-01: timer {i} at {now:?}");
             assert_eq!(
-                bank.output(i),
-                Some((o.q, o.et)),
-                "IEC-BANK-01: timer {i} at {now}"
+                bank.get(i),
+                Some(r.state()),
+                "IEC-BANK-01: state of timer {i} at {now:?}"
             );
         }
     }
@@ -622,106 +626,28 @@ pub fn prop_ton_bank(start: u32, steps: &[u32], inputs: &[[u64; 2]], pts: &[i32;
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2_000))]
 
-    /// IEC-BANK-01 on random IN patterns with clustered edges (a quarter of the bits flip per
-    /// scan), presets including negative and 0, and scan intervals crossing the 2^32 ms wrap.
+    /// IEC-BANK-01 on random IN patterns with clustered edges, presets including negative and
+    /// 0, and scan intervals crossing the 2^32 ms wrap: a bank of 64.
     #[test]
     fn proptest_ton_bank_equals_reference(
-        start in prop_oneof![any::<u32>(), (u32::MAX - 500)..=u32::MAX],
-        steps in prop::collection::vec(prop_oneof![0u32..5, 0u32..200, any::<u32>()], 16),
-        flips in prop::collection::vec(any::<[u64; 2]>(), 16),
+        start in prop_oneof![any::<u32>().prop_map(u64::from), ((u32::MAX - 500)..=u32::MAX).prop_map(u64::from)],
+        steps in prop::collection::vec(prop_oneof![0u64..5, 0u64..200, any::<u32>().prop_map(u64::from)], 16),
+        flips in prop::collection::vec(any::<u64>(), 16),
         pts in prop::array::uniform32(prop_oneof![-5i32..5, 0i32..300, any::<i32>()]),
         pts2 in prop::array::uniform32(0i32..300),
     ) {
-        let mut all = [0i32; 128];
-        for i in 0..128 {
-            all[i] = if i % 2 == 0 { pts[i / 4] } else { pts2[i / 4] };
+        let mut all = [Time::ZERO; 64];
+        for (i, p) in all.iter_mut().enumerate() {
+            *p = Time::from_millis(if i % 2 == 0 { pts[i / 2] } else { pts2[i / 2] });
         }
-        let mut input = [0u64; 2];
-        let inputs: Vec<[u64; 2]> = flips
+        let mut input = 0u64;
+        let inputs: Vec<[bool; 64]> = flips
             .iter()
             .map(|f| {
-                input = [input[0] ^ (f[0] & f[0].rotate_left(17)), input[1] ^ (f[1] & f[1].rotate_left(17))];
-                input
+                input ^= f & f.rotate_left(17);
+                core::array::from_fn(|i| input >> i & 1 != 0)
             })
             .collect();
         prop_ton_bank(start, &steps, &inputs, &all);
-    }
-}
-
-#[cfg(kani)]
-mod kani_harnesses {
-    use super::*;
-
-    fn any_state() -> IecState<u32> {
-        let state = IecState {
-            kind: kani::any(),
-            input: kani::any(),
-            running: kani::any(),
-            start: kani::any(),
-            pt: kani::any(),
-            et: kani::any(),
-            q: kani::any(),
-        };
-        kani::assume(state.is_valid() && state.pt <= i32::MAX as u32);
-        state
-    }
-
-    fn any_op() -> Op<u32> {
-        match kani::any::<u8>() % 6 {
-            0 => Op::Call(
-                kani::any(),
-                kani::any(),
-                IecInput {
-                    input: kani::any(),
-                    pt: Time::from_millis(kani::any()),
-                    reset: kani::any(),
-                },
-            ),
-            1 => Op::ReadQ(kani::any()),
-            2 => Op::ReadEt(kani::any()),
-            3 => Op::Rt,
-            4 => Op::PtCoil(Time::from_millis(kani::any())),
-            _ => Op::RunStopRun(kani::any()),
-        }
-    }
-
-    /// IEC-EQUIV-01 on the 32-bit clock, every state and operation.
-    #[kani::proof]
-    fn kani_step_equivalence() {
-        let checked = prop_step_equivalence(any_state(), any_op());
-        kani::cover!(checked, "the premise is reachable");
-    }
-
-    /// Table 8-20 on the 32-bit clock, every running state, input and pair of presets.
-    #[kani::proof]
-    fn kani_table_8_20() {
-        let input = IecInput {
-            input: kani::any(),
-            pt: Time::from_millis(kani::any()),
-            reset: kani::any(),
-        };
-        let checked = prop_table_8_20(
-            any_state(),
-            kani::any(),
-            kani::any(),
-            input,
-            Time::from_millis(kani::any()),
-        );
-        kani::cover!(checked, "a running timer is reachable");
-    }
-
-    /// IEC-EQUIV-02 on the 32-bit clock: every sequence of three operations from the initial
-    /// structure.
-    #[kani::proof]
-    #[kani::unwind(4)]
-    fn kani_sequence_equivalence() {
-        prop_sequence_equivalence(&[any_op(), any_op(), any_op()]);
-    }
-
-    /// The IEC invariants on the 32-bit clock, every state and operation.
-    #[kani::proof]
-    fn kani_invariants() {
-        let checked = prop_invariants(any_state(), any_op());
-        kani::cover!(checked, "the premise is reachable");
     }
 }

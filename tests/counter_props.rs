@@ -5,10 +5,10 @@
 //! at every call, that three implementations agree and that all of them agree with a small
 //! independent model computed in `i128`:
 //!
-//! - IEC (INT, LINT, ULINT): the reference [`CounterRef`], the packed [`PackedCounter`], and (for
+//! - IEC (INT, LINT, ULINT): the reference [`CounterRef`], the packed [`Counter`], and (for
 //!   CTUD) a one-word [`CounterBank`] whose counter 0 gets the trace and the other 63 counters get
 //!   the trace shifted by one call — so the bank's word operations see neighbours that differ.
-//! - S5 (`S_CU`, `S_CD`, `S_CUD`): the reference [`S5CounterRef`], a lone [`S5CounterCell`] and a
+//! - S5 (`S_CU`, `S_CD`, `S_CUD`): the reference [`S5CounterRef`], a lone [`S5Counter`] and a
 //!   [`CounterMemory`] box call.
 //!
 //! The traces cluster edges: signals come as runs (held for 1..4 calls) and as bursts that
@@ -16,13 +16,14 @@
 //! drawn near MIN, 0 and MAX so that saturation is reached within a trace. A failure shrinks to a
 //! short `Debug` list of steps.
 
-use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
-use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterMemory, CounterPreset, S5CounterCell, S5CounterInput, S5CounterKind, S5CounterRef,
-    S5CounterState, CV_MAX,
+    CounterMemory, CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps,
+    S5CounterRef, S5CounterState, CV_MAX,
 };
-use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterState};
+use plc_timers::counter::{
+    BankInputs, Counter, CounterBank, CounterInput, CounterInt, CounterKind, CounterOps,
+    CounterRef, CounterState,
+};
 use proptest::prelude::*;
 
 /// One call's binary inputs.
@@ -123,12 +124,12 @@ fn check_iec<T: CounterInt>(
     pv: T,
     trace: &[Signals],
 ) -> Result<(), TestCaseError> {
-    let mut reference = CounterRef { kind, state: start };
-    let mut packed = PackedCounter::from_state(start);
+    let mut reference = CounterRef::from_state(start);
+    let mut packed = Counter::from_state(start);
     let mut model = (start.cv.to_i128(), start.cu_prev, start.cd_prev);
     // Bank: counter 0 runs the trace; counters 1..64 run it one call late (their call 0 is idle).
-    let mut bank = CounterBank::<T, 1>::new();
-    let mut lagging = CounterRef::<T>::new(CounterKind::Ctud);
+    let mut bank = CounterBank::<T, 64>::new();
+    let mut lagging = CounterRef::<T>::new();
     let bank_from_zero = start == CounterState::default();
     let mut prev = Signals {
         cu: false,
@@ -144,19 +145,19 @@ fn check_iec<T: CounterInt>(
             ld: sig.ld,
             pv,
         };
-        let o_ref = reference.call(input);
+        let o_ref = reference.call(kind, input);
         let o_packed = packed.call(kind, input);
         model_call(kind, &mut model, sig, pv);
         prop_assert_eq!(o_ref, o_packed, "CNT-EQUIV-01 outputs at call {}", n);
         prop_assert_eq!(
-            reference.state,
-            packed.abstraction(),
+            reference.state(),
+            packed.state(),
             "CNT-EQUIV-01 state at call {}",
             n
         );
         prop_assert_eq!(o_ref.cv.to_i128(), model.0, "model CV at call {}", n);
         prop_assert_eq!(
-            (reference.state.cu_prev, reference.state.cd_prev),
+            (reference.state().cu_prev, reference.state().cd_prev),
             (model.1, model.2),
             "CNT-EDGE-01 memories at call {}",
             n
@@ -165,15 +166,17 @@ fn check_iec<T: CounterInt>(
         prop_assert_eq!(o_ref.qd, o_ref.cv <= T::ZERO, "CNT-Q-01 QD at call {}", n);
 
         if kind == CounterKind::Ctud && bank_from_zero {
-            let word = |now: bool, before: bool| u64::from(now) | (u64::from(before) * !1u64);
+            let word = |now: bool, before: bool| -> [bool; 64] {
+                core::array::from_fn(|i| if i == 0 { now } else { before })
+            };
             let (cu, cd, r, ld) = (
-                [word(sig.cu, prev.cu)],
-                [word(sig.cd, prev.cd)],
-                [word(sig.r, prev.r)],
-                [word(sig.ld, prev.ld)],
+                word(sig.cu, prev.cu),
+                word(sig.cd, prev.cd),
+                word(sig.r, prev.r),
+                word(sig.ld, prev.ld),
             );
             bank.scan(
-                BankInputs {
+                &BankInputs {
                     cu: &cu,
                     cd: &cd,
                     r: &r,
@@ -181,13 +184,16 @@ fn check_iec<T: CounterInt>(
                 },
                 pv,
             );
-            let o_lag = lagging.call(CounterInput {
-                cu: prev.cu,
-                cd: prev.cd,
-                r: prev.r,
-                ld: prev.ld,
-                pv,
-            });
+            let o_lag = lagging.call(
+                CounterKind::Ctud,
+                CounterInput {
+                    cu: prev.cu,
+                    cd: prev.cd,
+                    r: prev.r,
+                    ld: prev.ld,
+                    pv,
+                },
+            );
             prop_assert_eq!(
                 bank.output(0, pv),
                 Some(o_ref),
@@ -196,8 +202,8 @@ fn check_iec<T: CounterInt>(
             );
             for i in 1..64 {
                 prop_assert_eq!(
-                    bank.state(i),
-                    Some(lagging.state),
+                    bank.get(i),
+                    Some(lagging.state()),
                     "CNT-BANK-01 counter {} call {}",
                     i,
                     n
@@ -267,6 +273,7 @@ struct S5Step {
     cd: bool,
     s: bool,
     r: bool,
+    fr: bool,
     pv: u16,
 }
 
@@ -283,16 +290,23 @@ fn s5_steps() -> impl Strategy<Value = Vec<S5Step>> {
             signal(len, false),
             signal(len, true),
             signal(len, true),
+            signal(len, true),
             prop::collection::vec(pv.clone(), len),
         )
-            .prop_map(|(cu, cd, s, r, pv)| {
-                let n = cu.len().min(cd.len()).min(s.len()).min(r.len());
+            .prop_map(|(cu, cd, s, r, fr, pv)| {
+                let n = cu
+                    .len()
+                    .min(cd.len())
+                    .min(s.len())
+                    .min(r.len())
+                    .min(fr.len());
                 (0..n)
                     .map(|i| S5Step {
                         cu: cu[i],
                         cd: cd[i],
                         s: s[i],
                         r: r[i],
+                        fr: fr[i],
                         pv: pv[i],
                     })
                     .collect::<Vec<_>>()
@@ -300,49 +314,67 @@ fn s5_steps() -> impl Strategy<Value = Vec<S5Step>> {
     })
 }
 
-/// The independent S5 model: edges of CU, CD, S; counting saturating at 0..=999 with
-/// simultaneous edges cancelling; then a rising S loads PV; then R (level) clears (SC-PRIO-01).
+/// The independent S5 model, written from the rules: a rising FR clears the CU, CD and S
+/// memories (SC-FR-01); a box without CU or CD leaves that memory alone (SC-INPUTS-01); rising
+/// CU and rising CD both count, each saturating in 0..=999 (SC-SIMUL-01, SC-SAT-01); a rising S
+/// loads PV and clears the CU and CD memories (SC-SET-01); R (level) clears CV last
+/// (SC-PRIO-01).
 fn s5_model(kind: S5CounterKind, st: &mut S5CounterState, i: S5Step) {
-    let cu = i.cu && kind != S5CounterKind::SCd;
-    let cd = i.cd && kind != S5CounterKind::SCu;
-    let (up, down, set) = (cu && !st.cu_prev, cd && !st.cd_prev, i.s && !st.s_prev);
-    st.cu_prev = cu;
-    st.cd_prev = cd;
+    if i.fr && !st.fr_prev {
+        st.cu_prev = false;
+        st.cd_prev = false;
+        st.s_prev = false;
+    }
+    st.fr_prev = i.fr;
+    let mut cv = i32::from(st.cv);
+    if kind != S5CounterKind::SCd {
+        if i.cu && !st.cu_prev {
+            cv = (cv + 1).min(999);
+        }
+        st.cu_prev = i.cu;
+    }
+    if kind != S5CounterKind::SCu {
+        if i.cd && !st.cd_prev {
+            cv = (cv - 1).max(0);
+        }
+        st.cd_prev = i.cd;
+    }
+    if i.s && !st.s_prev {
+        cv = i32::from(i.pv);
+        st.cu_prev = false;
+        st.cd_prev = false;
+    }
     st.s_prev = i.s;
-    let counted = (i32::from(st.cv) + i32::from(up) - i32::from(down)).clamp(0, 999);
-    st.cv = if i.r {
-        0
-    } else if set {
-        i.pv
-    } else {
-        counted as u16
-    };
+    if i.r {
+        cv = 0;
+    }
+    st.cv = u16::try_from(cv).expect("0..=999");
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2_000))]
 
-    /// S5 counters from a start CV near 0 or 999: reference, cell, memory area and model agree
-    /// at every call (SC-PRIO-01, SC-RANGE-01, SC-BCD-01).
+    /// S5 counters from a start CV near 0 or 999: reference, packed word, memory area and model
+    /// agree at every call (SC-PRIO-01, SC-RANGE-01).
     #[test]
     fn s5_counter_traces(
         k in prop::sample::select(S5CounterKind::ALL.to_vec()),
         cv in prop_oneof![0u16..=3, 996u16..=CV_MAX, 0u16..=CV_MAX],
-        memories in any::<(bool, bool, bool)>(),
+        memories in any::<(bool, bool, bool, bool)>(),
         slot in 0usize..256,
         t in s5_steps(),
     ) {
-        let start = S5CounterState { cv, cu_prev: memories.0, cd_prev: memories.1, s_prev: memories.2 };
-        let mut reference = S5CounterRef { kind: k, state: start };
-        let mut cell = S5CounterCell::from_state(start).expect("CV <= 999");
+        let start = S5CounterState {
+            cv,
+            cu_prev: memories.0,
+            cd_prev: memories.1,
+            s_prev: memories.2,
+            fr_prev: memories.3,
+        };
+        let mut reference = S5CounterRef::from_state(start).expect("CV <= 999");
+        let mut word = S5Counter::from_state(start).expect("CV <= 999");
         let mut memory = CounterMemory::<256>::new();
-        // Bring the area's counter to the start state through its own STL operations: CU and
-        // CD set their memories (any count they cause is overwritten next), a rising S loads CV,
-        // then S takes its memory; S passes the CU/CD memories through, so no edge occurs.
-        memory.cu(slot, start.cu_prev).expect("slot < 256");
-        memory.cd(slot, start.cd_prev).expect("slot < 256");
-        memory.set(slot, true, CounterPreset::new(cv).expect("CV <= 999")).expect("slot < 256");
-        memory.set(slot, start.s_prev, CounterPreset::default()).expect("slot < 256");
+        prop_assert_eq!(memory.set_state(slot, start), Ok(true));
         prop_assert_eq!(memory.load(slot), Ok(cv), "area seeded with the start CV");
         let mut model = start;
         for (n, &step) in t.iter().enumerate() {
@@ -351,14 +383,15 @@ proptest! {
                 cd: step.cd,
                 s: step.s,
                 r: step.r,
+                fr: step.fr,
                 pv: CounterPreset::new(step.pv).expect("pv <= 999"),
             };
-            let o_ref = reference.call(input);
-            cell = cell.step(k.mask(input));
+            let o_ref = reference.call(k, input);
+            word = word.execute(k, input);
             s5_model(k, &mut model, step);
-            prop_assert_eq!(reference.state, model, "model state at call {}", n);
-            prop_assert_eq!(cell.abstraction(), reference.state, "S5 cell state at call {}", n);
-            prop_assert_eq!(cell.output(), o_ref, "S5 cell outputs at call {}", n);
+            prop_assert_eq!(reference.state(), model, "model state at call {}", n);
+            prop_assert_eq!(word.state(), reference.state(), "S5 word state at call {}", n);
+            prop_assert_eq!(word.output(), o_ref, "S5 word outputs at call {}", n);
             prop_assert!(o_ref.cv <= CV_MAX, "SC-RANGE-01 at call {}", n);
             prop_assert_eq!(o_ref.q, o_ref.cv != 0, "Q = CV != 0 at call {}", n);
             prop_assert_eq!(

@@ -8,9 +8,8 @@
 //! A failing case shrinks to a short `Vec<Event>` whose Debug is the scenario: the start time,
 //! then each event with its time step.
 
-use plc_timers::iec::reference::Reference;
-use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
-use plc_timers::time::Time;
+use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::time::{CpuTime, Time};
 use proptest::prelude::*;
 
 /// One event of a trace; `dt` is the time since the previous event in milliseconds (the CPU
@@ -75,9 +74,9 @@ fn start() -> impl Strategy<Value = u32> {
 /// Runs `events` on both implementations, with `kind_of(i)` the instruction of the i-th call,
 /// and asserts IEC-EQUIV-02 and IEC-ET-RANGE-01 after every event.
 fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usize) -> IecKind) {
-    let mut r = Reference::<u32>::new();
+    let mut r = IecTimerRef::<u32>::new();
     let mut opt = IecTimer::new();
-    let mut now = start;
+    let mut now = CpuTime::from_millis(u64::from(start));
     let mut input = false;
     for (i, &e) in events.iter().enumerate() {
         let (ro, oo) = match e {
@@ -87,7 +86,7 @@ fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usi
                 reset,
                 pt,
             } => {
-                now = now.wrapping_add(dt);
+                now = now.add_millis(u64::from(dt));
                 input ^= toggle;
                 let inp = IecInput {
                     input,
@@ -99,11 +98,11 @@ fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usi
                 ((a.q, a.et), (b.q, b.et))
             }
             Event::ReadQ { dt } => {
-                now = now.wrapping_add(dt);
+                now = now.add_millis(u64::from(dt));
                 ((r.read_q(now), 0), (opt.read_q(now), 0))
             }
             Event::ReadEt { dt } => {
-                now = now.wrapping_add(dt);
+                now = now.add_millis(u64::from(dt));
                 ((false, r.read_et(now)), (false, opt.read_et(now)))
             }
             Event::Rt => {
@@ -122,13 +121,16 @@ fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usi
                 ((false, 0), (false, 0))
             }
         };
-        assert_eq!(oo, ro, "IEC-EQUIV-02: result of event {i} ({e:?}) at {now}");
         assert_eq!(
-            opt.abstraction(),
-            r.state,
-            "IEC-EQUIV-02: state after event {i} ({e:?}) at {now}"
+            oo, ro,
+            "IEC-EQUIV-02: result of event {i} ({e:?}) at {now:?}"
         );
-        let s = r.state;
+        assert_eq!(
+            opt.state(),
+            r.state(),
+            "IEC-EQUIV-02: state after event {i} ({e:?}) at {now:?}"
+        );
+        let s = r.state();
         assert!(
             s.et <= s.pt && s.pt <= i32::MAX as u32,
             "IEC-ET-RANGE-01: ET {} PT {} after event {i} ({e:?})",
@@ -172,15 +174,16 @@ proptest! {
 #[test]
 fn ton_across_the_wrap_with_reads() {
     let pt = Time::from_millis(300);
-    let start = u32::MAX - 99; // 100 ms before the wrap
-    let mut r = Reference::<u32>::new();
+    let start = CpuTime::from_millis(u64::from(u32::MAX - 99)); // 100 ms before the wrap
+    let at = |ms: u64| CpuTime::from_millis((1 << 32) + ms);
+    let mut r = IecTimerRef::<u32>::new();
     let mut opt = IecTimer::new();
     for t in [&mut r as &mut dyn IecTimerOps<u32>, &mut opt] {
         assert!(!t.call(IecKind::Ton, start, IecInput::new(true, pt)).q);
-        assert_eq!(t.read_et(50), 150);
-        assert!(!t.read_q(199)); // 100 + 199 = 299 ms < PT
-        assert!(t.read_q(200)); // 300 ms: expired
-        assert_eq!(t.read_et(250), 300);
+        assert_eq!(t.read_et(at(50)), 150);
+        assert!(!t.read_q(at(199))); // 100 + 199 = 299 ms < PT
+        assert!(t.read_q(at(200))); // 300 ms: expired
+        assert_eq!(t.read_et(at(250)), 300);
     }
-    assert_eq!(opt.abstraction(), r.state);
+    assert_eq!(opt.state(), r.state());
 }

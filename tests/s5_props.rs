@@ -2,7 +2,8 @@
 //! that must agree step by step (S5-EQUIV-01, S5-EQUIV-02, S5-AREA-01):
 //!
 //! 1. the reference [`S5TimerRef::call`] (ticks counted from the clock per timer),
-//! 2. a lone packed [`Cell`] driven by hand (`tick(ticks_between(..))`, then `execute`),
+//! 2. a lone packed [`TimerWord`] driven by hand (`tick(ticks_between(..))`, then `execute`),
+//!    and an [`S5Timer`] called with the same inputs,
 //! 3. a [`TimerMemory`] holding one timer of each kind, ticked per base by `advance_to`.
 //!
 //! The traces are built to hit the hard cases: time steps clustered around tick boundaries of
@@ -12,11 +13,10 @@
 //! long (up to 60 executions) traces with absolute clocks up to ~10^6 s, where the clock's phase
 //! relative to each base matters. A failure shrinks to a short `Debug` list of [`Step`]s.
 
-use plc_timers::s5::cell::{self, Cell};
-use plc_timers::s5::memory::TimerMemory;
-use plc_timers::s5::reference::S5TimerRef;
-use plc_timers::s5::{ticks_between, S5Input, S5Kind};
-use plc_timers::time::{S5Time, TimeBase};
+use plc_timers::s5::{
+    ticks_between, S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef, TimerMemory, TimerWord,
+};
+use plc_timers::time::{CpuTime, S5Time, TimeBase};
 use proptest::prelude::*;
 
 /// One execution of all five timers: the time since the previous one, the binary inputs, and a
@@ -93,16 +93,15 @@ fn trace_strategy() -> impl Strategy<Value = (u64, Vec<Step>)> {
 /// Runs the trace through the three implementations and compares outputs and states after each
 /// execution. Returns an error message naming the step and the timer on the first difference.
 fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
-    let mut refs = S5Kind::ALL.map(|kind| S5TimerRef {
-        kind,
-        state: S5TimerRef::new(kind).state,
-        t_prev: t0,
-    });
-    let mut cells = [(Cell::RESET, t0); 5];
-    let mut area = TimerMemory::<5>::from_cells([Cell::RESET; 5], t0);
+    let t0 = CpuTime::from_millis(t0);
+    let fresh = S5TimerRef::from_state(S5TimerRef::new().state(), t0).expect("valid");
+    let mut refs = [fresh; 5];
+    let mut words = [(TimerWord::RESET, t0); 5];
+    let mut lone = [S5Timer::from_state(S5TimerRef::new().state(), t0).expect("valid"); 5];
+    let mut area = TimerMemory::<5>::from_words([TimerWord::RESET; 5], t0);
     let mut t = t0;
     for (n, step) in steps.iter().enumerate() {
-        t += step.dt_ms;
+        t = t.add_millis(step.dt_ms);
         for (i, kind) in S5Kind::ALL.into_iter().enumerate() {
             let input = S5Input {
                 s: step.s,
@@ -110,13 +109,21 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
                 fr: step.fr,
                 tv: step.tvs[i],
             };
-            let out_ref = refs[i].call(t, input);
+            let out_ref = refs[i].call(kind, t, input);
 
-            let (c, t_prev) = cells[i];
+            let (c, t_prev) = words[i];
             let c = c
                 .tick(ticks_between(t_prev, t, c.base()))
                 .execute(kind, input);
-            cells[i] = (c, t);
+            words[i] = (c, t);
+            let out_lone = lone[i].call(kind, t, input);
+            prop_assert_eq!(
+                out_lone,
+                out_ref,
+                "S5-EQUIV-01 S5Timer, step {} {:?}",
+                n,
+                kind
+            );
 
             let out_area = area
                 .call(i, kind, t, input)
@@ -125,7 +132,7 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
             prop_assert_eq!(
                 c.output(),
                 out_ref,
-                "S5-EQUIV-01 cell vs reference, step {} {:?} t = {}",
+                "S5-EQUIV-01 word vs reference, step {} {:?} t = {:?}",
                 n,
                 kind,
                 t
@@ -133,21 +140,21 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
             prop_assert_eq!(
                 out_area,
                 out_ref,
-                "S5-EQUIV-02 area vs reference, step {} {:?} t = {}",
+                "S5-EQUIV-02 area vs reference, step {} {:?} t = {:?}",
                 n,
                 kind,
                 t
             );
             prop_assert_eq!(
-                cell::abstraction(c),
-                refs[i].state,
+                c.state(),
+                refs[i].state(),
                 "S5-EQUIV-01 state, step {} {:?}",
                 n,
                 kind
             );
             prop_assert_eq!(
-                cell::abstraction(area.cells()[i]),
-                refs[i].state,
+                area.get(i),
+                Ok(refs[i].state()),
                 "S5-AREA-01 state, step {} {:?}",
                 n,
                 kind
@@ -162,7 +169,7 @@ fn check_trace(t0: u64, steps: &[Step]) -> Result<(), TestCaseError> {
             );
             // S5TMR-RANGE-01 along the trace: the value fits, the BCD word is valid BCD with
             // the base in bits 13-12 and nothing above.
-            let st = refs[i].state;
+            let st = refs[i].state();
             prop_assert!(st.value <= 999, "S5TMR-RANGE-01 value {}", st.value);
             prop_assert!(
                 S5Time::from_word(out_ref.bcd).is_ok(),
@@ -221,16 +228,17 @@ fn fixed_trace_ticks_follow_clock_phase() {
     };
     let steps = [step(0, true), step(22, true), step(1, true)];
     check_trace(7, &steps).expect("implementations agree");
-    let mut sd = S5TimerRef {
-        kind: S5Kind::SOdt,
-        state: S5TimerRef::new(S5Kind::SOdt).state,
-        t_prev: 7,
-    };
+    let mut sd =
+        S5TimerRef::from_state(S5TimerRef::new().state(), CpuTime::from_millis(7)).expect("valid");
     let input = S5Input::new(true, false, tv);
-    assert!(!sd.call(7, input).q);
-    assert!(!sd.call(29, input).q, "ticks at 10 and 20: one unit left");
+    let at = CpuTime::from_millis;
+    assert!(!sd.call(S5Kind::SOdt, at(7), input).q);
     assert!(
-        sd.call(30, input).q,
+        !sd.call(S5Kind::SOdt, at(29), input).q,
+        "ticks at 10 and 20: one unit left"
+    );
+    assert!(
+        sd.call(S5Kind::SOdt, at(30), input).q,
         "third tick at 30 ms runs the time out"
     );
 }
