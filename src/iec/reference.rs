@@ -106,6 +106,15 @@ impl<C: ClockWord> IecTimerRef<C> {
         }
     }
 
+    /// IEC-ACCESS-01: an instruction reads a member of the structure: the update of the
+    /// instruction that last ran on it happens first (none before the first call).
+    fn access(&mut self, now: CpuTime) -> &IecState<C> {
+        if let Some(kind) = self.state.kind {
+            self.update(now.clock(), kind);
+        }
+        &self.state
+    }
+
     /// Stops timing and clears ELAPSED and Q: TON on IN = 0, TOF on IN = 1 (Table 8-20), TONR on R.
     fn reset_and_stop(&mut self) {
         let s = &mut self.state;
@@ -204,18 +213,12 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
 
     /// IEC-ACCESS-01: reading Q through the structure updates the timer first.
     fn read_q(&mut self, now: CpuTime) -> bool {
-        if let Some(kind) = self.state.kind {
-            self.update(now.clock(), kind);
-        }
-        self.state.q
+        self.access(now).q
     }
 
     /// IEC-ACCESS-01: reading ELAPSED through the structure updates the timer first.
     fn read_et(&mut self, now: CpuTime) -> C {
-        if let Some(kind) = self.state.kind {
-            self.update(now.clock(), kind);
-        }
-        self.state.et
+        self.access(now).et
     }
 
     /// IEC-RT-01: the timer data is zeroed (Strączyński lecture: "wyzerowanie danych timera";
