@@ -508,3 +508,519 @@ fn exhaustive_s5_preset_words() {
     }
     assert_eq!(accepted, 1000);
 }
+
+// ---------------------------------------------------------------------------------------------
+// One property per requirement: the rule's text as a predicate over one call, checked on every
+// implementation (IEC: reference, packed counter, bank for CTUD; S5: reference, packed word,
+// the area's box call and the area's STL sequence FR, CU, CD, S, R).
+// ---------------------------------------------------------------------------------------------
+
+use crate::cover::cover;
+
+/// One IEC counter call through each implementation: (name, state after, outputs).
+fn iec_counter_impls<T: CounterInt>(
+    kind: CounterKind,
+    st: CounterState<T>,
+    i: CounterInput<T>,
+) -> Vec<(
+    &'static str,
+    CounterState<T>,
+    plc_timers::counter::CounterOutput<T>,
+)> {
+    let mut v = Vec::with_capacity(3);
+    let mut r = CounterRef::from_state(st);
+    let o = r.call(kind, i);
+    v.push(("reference", r.state(), o));
+    let mut p = Counter::from_state(st);
+    let o = p.call(kind, i);
+    v.push(("packed", p.state(), o));
+    if kind == CounterKind::Ctud {
+        let mut bank = CounterBank::<T, 1>::new();
+        assert!(bank.set(0, st));
+        bank.scan(
+            &BankInputs {
+                cu: &[i.cu],
+                cd: &[i.cd],
+                r: &[i.r],
+                ld: &[i.ld],
+            },
+            i.pv,
+        );
+        v.push((
+            "bank",
+            bank.get(0).expect("0"),
+            bank.output(0, i.pv).expect("0"),
+        ));
+    }
+    v
+}
+
+/// CNT-EDGE-01, CNT-PRIO-01, CNT-SAT-01, CNT-SIMUL-01, CNT-Q-01, CNT-INPUTS-01, each stated on
+/// its own, in `i128` where `CV +- 1` cannot overflow.
+pub fn prop_iec_counter_rules<T: CounterInt>(
+    kind: CounterKind,
+    st: CounterState<T>,
+    i: CounterInput<T>,
+) {
+    let (has_cu, has_cd, has_r, has_ld) = match kind {
+        CounterKind::Ctu => (true, false, true, false),
+        CounterKind::Ctd => (false, true, false, true),
+        CounterKind::Ctud => (true, true, true, true),
+    };
+    let (cu, cd, r, ld) = (i.cu && has_cu, i.cd && has_cd, i.r && has_r, i.ld && has_ld);
+    let up = cu && !st.cu_prev;
+    let down = cd && !st.cd_prev;
+    let cv = st.cv.to_i128();
+    let (min, max) = (T::MIN.to_i128(), T::MAX.to_i128());
+    // CNT-INPUTS-01: an absent input has no effect: the call equals the one with it at 0.
+    let masked = CounterInput {
+        cu,
+        cd,
+        r,
+        ld,
+        pv: i.pv,
+    };
+    let reference = iec_counter_impls(kind, st, masked);
+    for (name, post, out) in iec_counter_impls(kind, st, i) {
+        let same = reference
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .expect("same impl");
+        assert_eq!(
+            (post, out),
+            (same.1, same.2),
+            "CNT-INPUTS-01: {name}: {kind:?} ignores the inputs it does not have"
+        );
+        assert_eq!(
+            (post.cu_prev, post.cd_prev),
+            (cu, cd),
+            "CNT-EDGE-01: {name}: the edge memories take the inputs on every call (also under R, LD)"
+        );
+        let after = post.cv.to_i128();
+        if r {
+            assert_eq!(after, 0, "CNT-PRIO-01: {name}: R = 1 gives CV = 0");
+        } else if ld {
+            assert_eq!(
+                post.cv, i.pv,
+                "CNT-PRIO-01: {name}: LD = 1 (R = 0) gives CV = PV"
+            );
+        } else if up && down {
+            assert_eq!(
+                after, cv,
+                "CNT-SIMUL-01: {name}: CU and CD rising together leave CV"
+            );
+        } else if up {
+            assert_eq!(
+                after,
+                (cv + 1).min(max),
+                "CNT-SAT-01: {name}: counting up stops at MAX"
+            );
+        } else if down {
+            assert_eq!(
+                after,
+                (cv - 1).max(min),
+                "CNT-SAT-01: {name}: counting down stops at MIN"
+            );
+        } else {
+            assert_eq!(after, cv, "CNT-EDGE-01: {name}: no rising edge, no count");
+        }
+        assert_eq!(
+            (out.qu, out.qd, out.cv),
+            (post.cv >= i.pv, post.cv <= T::ZERO, post.cv),
+            "CNT-Q-01: {name}: QU = CV >= PV, QD = CV <= 0"
+        );
+    }
+    cover!(
+        up && !down && !r && !ld && cv == max,
+        "CNT-SAT-01: count up at MAX"
+    );
+    cover!(up && down && !r && !ld, "CNT-SIMUL-01: both edges");
+    cover!(r && ld, "CNT-PRIO-01: R and LD together");
+    cover!(i.cu && st.cu_prev && !r, "CNT-EDGE-01: CU held");
+}
+
+/// Exhaustive on the 8-bit types: every kind x CV x edge memories x PV in {MIN, -1, 0, 1, MAX}
+/// x inputs. Small scope: the rules compare CV with MIN, MAX and PV and 0; at 8 bits every such
+/// case occurs, and the code is the same generic code as at 64 bits (Kani: `kani_counter_*`).
+#[test]
+fn exhaustive_counter_rules_8bit() {
+    crate::cover::check(|| {
+        for kind in CounterKind::ALL {
+            for e in 0..4u8 {
+                for bits in 0..16u8 {
+                    for cv in i8::MIN..=i8::MAX {
+                        for pv in [i8::MIN, -1, 0, 1, i8::MAX] {
+                            let st = CounterState {
+                                cv,
+                                cu_prev: e & 1 != 0,
+                                cd_prev: e & 2 != 0,
+                            };
+                            let i = CounterInput {
+                                cu: bits & 1 != 0,
+                                cd: bits & 2 != 0,
+                                r: bits & 4 != 0,
+                                ld: bits & 8 != 0,
+                                pv,
+                            };
+                            prop_iec_counter_rules(kind, st, i);
+                            let ust = CounterState {
+                                cv: cv as u8,
+                                ..CounterState::default()
+                            };
+                            let ust = CounterState {
+                                cu_prev: st.cu_prev,
+                                cd_prev: st.cd_prev,
+                                ..ust
+                            };
+                            prop_iec_counter_rules(
+                                kind,
+                                ust,
+                                CounterInput {
+                                    cu: i.cu,
+                                    cd: i.cd,
+                                    r: i.r,
+                                    ld: i.ld,
+                                    pv: pv as u8,
+                                },
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    });
+}
+
+macro_rules! counter_harness {
+    ($name:ident, $t:ty) => {
+        /// CNT-EQUIV-01 and every IEC counter rule for this type: random under `cargo test`,
+        /// every state and input under Kani (no loop but the implementations:
+        /// `#[kani::unwind(4)]` covers the three of CTUD and the bank's one counter).
+        #[test]
+        #[cfg_attr(kani, kani::proof, kani::unwind(4))]
+        fn $name() {
+            bolero::check!()
+                .with_type::<(CounterKind, CounterState<$t>, CounterInput<$t>)>()
+                .with_iterations(5_000)
+                .for_each(|&(kind, st, i)| {
+                    prop_step_equivalence(kind, st, i);
+                    prop_iec_counter_rules(kind, st, i);
+                });
+        }
+    };
+}
+
+counter_harness!(kani_counter_sint, i8);
+counter_harness!(kani_counter_int, i16);
+counter_harness!(kani_counter_dint, i32);
+counter_harness!(kani_counter_lint, i64);
+counter_harness!(kani_counter_usint, u8);
+counter_harness!(kani_counter_uint, u16);
+counter_harness!(kani_counter_udint, u32);
+counter_harness!(kani_counter_ulint, u64);
+
+/// One S5 counter call through each implementation: (name, state after, outputs).
+fn s5_counter_impls(
+    kind: S5CounterKind,
+    st: S5CounterState,
+    i: S5CounterInput,
+) -> [(
+    &'static str,
+    S5CounterState,
+    plc_timers::counter::s5::S5CounterOutput,
+); 4] {
+    let mut r = S5CounterRef::from_state(st).expect("valid");
+    let ro = r.call(kind, i);
+    let w = S5Counter::from_state(st).expect("valid").execute(kind, i);
+    let mut area = CounterMemory::<2>::new();
+    assert_eq!(area.set_state(1, st), Ok(true));
+    let ao = area.call(1, kind, i).expect("C 1");
+    // The box as its STL sequence FR, CU, CD, S, R on C 0 (SC-PRIO-01, SC-INPUTS-01).
+    let mut stl = CounterMemory::<1>::new();
+    assert_eq!(stl.set_state(0, st), Ok(true));
+    let mut ops = vec![stl.fr(0, i.fr)];
+    if kind.counts_up() {
+        ops.push(stl.cu(0, i.cu));
+    }
+    if kind.counts_down() {
+        ops.push(stl.cd(0, i.cd));
+    }
+    ops.push(stl.set(0, i.s, i.pv));
+    ops.push(stl.reset(0, i.r));
+    assert!(ops.iter().all(Result::is_ok), "C 0 exists");
+    let so = plc_timers::counter::s5::S5CounterOutput {
+        q: stl.status(0).expect("C 0"),
+        cv: stl.load(0).expect("C 0"),
+        cv_bcd: stl.load_bcd(0).expect("C 0"),
+    };
+    [
+        ("reference", r.state(), ro),
+        ("word", w.state(), w.output()),
+        ("area box", area.get(1).expect("C 1"), ao),
+        ("area STL", stl.get(0).expect("C 0"), so),
+    ]
+}
+
+/// Every S5 counter rule on one call, each stated on its own, through every implementation.
+pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5CounterInput) -> bool {
+    if !st.is_valid() {
+        return false;
+    }
+    let fr_rise = i.fr && !st.fr_prev;
+    let (cu_m, cd_m, s_m) = s5_memories_after_fr(&st, i.fr);
+    let up = kind.counts_up() && i.cu && !cu_m;
+    let down = kind.counts_down() && i.cd && !cd_m;
+    let set = i.s && !s_m;
+    let cv = i32::from(st.cv);
+    let pv = i.pv.value();
+    for (name, post, out) in s5_counter_impls(kind, st, i) {
+        assert!(
+            post.cv <= 999,
+            "SC-RANGE-01: {name}: CV {} in 0..=999",
+            post.cv
+        );
+        let bcd = (post.cv / 100) << 8 | (post.cv / 10 % 10) << 4 | (post.cv % 10);
+        assert_eq!(
+            (out.cv, out.cv_bcd),
+            (post.cv, bcd),
+            "SC-RANGE-01: {name}: CV_BCD is the BCD of CV"
+        );
+        assert_eq!(
+            out.q,
+            post.cv != 0,
+            "SC-Q-01: {name}: Q = 1 exactly when CV != 0"
+        );
+        assert_eq!(
+            post.fr_prev, i.fr,
+            "SC-FR-01: {name}: the FR memory takes FR"
+        );
+        assert_eq!(
+            post.s_prev, i.s,
+            "SC-EDGE-01: {name}: the S memory takes S on every call"
+        );
+        // The CU and CD memories: the input if the box has it, else left (SC-INPUTS-01); a
+        // rising FR clears them first (SC-FR-01); a set clears them (SC-SET-01).
+        let cu_after = if set {
+            false
+        } else if kind.counts_up() {
+            i.cu
+        } else {
+            cu_m
+        };
+        let cd_after = if set {
+            false
+        } else if kind.counts_down() {
+            i.cd
+        } else {
+            cd_m
+        };
+        if kind.counts_up() {
+            assert_eq!(
+                post.cu_prev, cu_after,
+                "SC-EDGE-01: {name}: the CU memory takes CU (cleared by a set)"
+            );
+        } else {
+            assert_eq!(
+                post.cu_prev, cu_after,
+                "SC-INPUTS-01: {name}: S_CD leaves the CU memory alone"
+            );
+        }
+        if kind.counts_down() {
+            assert_eq!(
+                post.cd_prev, cd_after,
+                "SC-EDGE-01: {name}: the CD memory takes CD (cleared by a set)"
+            );
+        } else {
+            assert_eq!(
+                post.cd_prev, cd_after,
+                "SC-INPUTS-01: {name}: S_CU leaves the CD memory alone"
+            );
+        }
+        let after = i32::from(post.cv);
+        if i.r {
+            assert_eq!(
+                after, 0,
+                "SC-PRIO-01: {name}: R = 1 holds CV at 0 over S and counting"
+            );
+            continue;
+        }
+        if set {
+            assert_eq!(
+                post.cv, pv,
+                "SC-SET-01: {name}: a rising S sets CV = PV over counting"
+            );
+            assert!(
+                !post.cu_prev && !post.cd_prev,
+                "SC-SET-01: {name}: a set clears the CU and CD memories"
+            );
+            continue;
+        }
+        match (up, down) {
+            (true, true) => assert_eq!(
+                after,
+                match cv {
+                    999 => 998,
+                    0 => 0,
+                    v => v,
+                },
+                "SC-SIMUL-01: {name}: CU and CD rising together both count, each saturating"
+            ),
+            (true, false) => assert_eq!(
+                after,
+                (cv + 1).min(999),
+                "SC-SAT-01: {name}: up stops at 999"
+            ),
+            (false, true) => {
+                assert_eq!(after, (cv - 1).max(0), "SC-SAT-01: {name}: down stops at 0")
+            }
+            (false, false) => assert_eq!(after, cv, "SC-EDGE-01: {name}: no rising edge, no count"),
+        }
+        if fr_rise && !i.cu && !i.cd && !i.s {
+            assert_eq!(after, cv, "SC-FR-01: {name}: FR alone changes no CV");
+        }
+    }
+    // SC-FR-01 as a relation: a rising FR equals the call from the memories cleared and FR 1.
+    if fr_rise {
+        let cleared = S5CounterState {
+            cu_prev: false,
+            cd_prev: false,
+            s_prev: false,
+            fr_prev: true,
+            ..st
+        };
+        for ((name, a, ao), (_, b, bo)) in s5_counter_impls(kind, st, i)
+            .into_iter()
+            .zip(s5_counter_impls(kind, cleared, i))
+        {
+            assert_eq!(
+                (a, ao),
+                (b, bo),
+                "SC-FR-01: {name}: a rising FR clears the CU, CD and S memories, nothing else"
+            );
+        }
+    }
+    // SC-SET-01 over two calls: a counter set while CU (CD) is held counts once at the next call.
+    if set && !i.r && kind != S5CounterKind::SCud {
+        let held = S5CounterInput {
+            s: i.s,
+            r: false,
+            ..i
+        };
+        for (name, post, _) in s5_counter_impls(kind, st, i) {
+            let (_, next, _) = s5_counter_impls(kind, post, held)[0];
+            let counts = if kind.counts_up() { held.cu } else { held.cd };
+            let expected = match (counts, kind.counts_up()) {
+                (false, _) => pv,
+                (true, true) => (pv + 1).min(999),
+                (true, false) => pv.saturating_sub(1),
+            };
+            assert_eq!(
+                next.cv, expected,
+                "SC-SET-01: {name}: a held count input counts once after a set"
+            );
+        }
+    }
+    cover!(
+        up && down && !set && !i.r && cv == 999,
+        "SC-SIMUL-01: both at 999"
+    );
+    cover!(
+        set && i.cu && kind == S5CounterKind::SCu,
+        "SC-SET-01: set with CU held"
+    );
+    cover!(
+        fr_rise && st.cu_prev && i.cu,
+        "SC-FR-01: FR re-arms a held CU"
+    );
+    cover!(
+        kind == S5CounterKind::SCu && i.cd != st.cd_prev,
+        "SC-INPUTS-01: S_CU sees a CD change"
+    );
+    true
+}
+
+/// Exhaustive S5 counter rules: every kind x CV in {0, 1, 2, 500, 997, 998, 999} x every edge
+/// memory x every input x PV in {0, 1, 998, 999}. Small scope: the rules compare CV with 0, 1,
+/// 998 and 999 and copy PV; the full CV range is in `exhaustive_s5_counters` (equivalence) and
+/// Kani's `kani_s5_counter` (every state).
+#[test]
+fn exhaustive_s5_counter_rules() {
+    let n = crate::cover::check(|| {
+        let mut n = 0u32;
+        for kind in S5CounterKind::ALL {
+            for cv in [0, 1, 2, 500, 997, 998, 999] {
+                for e in 0..16u8 {
+                    let st = S5CounterState {
+                        cv,
+                        cu_prev: e & 1 != 0,
+                        cd_prev: e & 2 != 0,
+                        s_prev: e & 4 != 0,
+                        fr_prev: e & 8 != 0,
+                    };
+                    for bits in 0..32u8 {
+                        for pv in [0, 1, 998, 999] {
+                            let i = S5CounterInput {
+                                cu: bits & 1 != 0,
+                                cd: bits & 2 != 0,
+                                s: bits & 4 != 0,
+                                r: bits & 8 != 0,
+                                fr: bits & 16 != 0,
+                                pv: CounterPreset::new(pv).expect("<= 999"),
+                            };
+                            n += u32::from(prop_s5_counter_rules(kind, st, i));
+                        }
+                    }
+                }
+            }
+        }
+        n
+    });
+    assert_eq!(n, 3 * 7 * 16 * 32 * 4);
+}
+
+/// The bolero harness of the S5 counters: equivalence and every rule, random under `cargo
+/// test`, every state and input under Kani (the loops: over the four implementations and the
+/// box's five STL operations: `#[kani::unwind(6)]`).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(6))]
+fn kani_s5_counter() {
+    bolero::check!()
+        .with_type::<(S5CounterKind, S5CounterState, S5CounterInput)>()
+        .with_iterations(20_000)
+        .for_each(|&(kind, st, i)| {
+            prop_s5_step_equivalence(kind, st, i);
+            prop_s5_counter_rules(kind, st, i);
+        });
+}
+
+/// The bolero harness of the counter memory's STL operations (SC-STL-01, FR included): any
+/// sequence of four operations with their RLOs (`#[kani::unwind(5)]`: four operations and the
+/// loop's exit).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_stl_operations() {
+    bolero::check!()
+        .with_type::<(CounterPreset, [(u8, bool); 4])>()
+        .with_iterations(20_000)
+        .for_each(|&(pv, ops)| {
+            let ops = ops.map(|(k, rlo)| match k % 5 {
+                0 => StlOp::Fr(rlo),
+                1 => StlOp::Cu(rlo),
+                2 => StlOp::Cd(rlo),
+                3 => StlOp::S(rlo),
+                _ => StlOp::R(rlo),
+            });
+            prop_stl_operations(pv, &ops);
+        });
+}
+
+/// The bolero harness of the CTUD bank (CNT-EQUIV-01): 8 counters, 3 scans of any inputs
+/// (`#[kani::unwind(9)]`: the bank's and the check's loops over 8 counters, and 3 scans).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(9))]
+fn kani_counter_bank() {
+    bolero::check!()
+        .with_type::<([[u64; 4]; 3], i16)>()
+        .with_iterations(2_000)
+        .for_each(|(scans, pv)| prop_bank::<i16, 8>(scans, *pv));
+}

@@ -41,7 +41,7 @@ impl ClockWord for U4 {
 }
 
 /// One operation on a timer structure.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, bolero::TypeGenerator)]
 pub enum Op {
     /// A box call.
     Call(IecKind, CpuTime, IecInput),
@@ -83,7 +83,7 @@ fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op) -> (bool, C) {
     }
 }
 
-/// IEC-EQUIV-01: for every valid state and operation, the structure's result and its state
+/// IEC-STRUCT-01: for every valid state and operation, the structure's result and its state
 /// mapped through the abstraction function equal the reference's.
 pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     let Some(mut opt) = IecTimerOf::from_state(state) else {
@@ -92,23 +92,23 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     assert_eq!(
         opt.state(),
         state,
-        "IEC-EQUIV-01: abstraction inverts from_state"
+        "IEC-STRUCT-01: abstraction inverts from_state"
     );
     let mut r = IecTimerRef::from_state(state).expect("valid");
     let ro = apply(&mut r, op);
     let oo = apply(&mut opt, op);
-    assert_eq!(oo, ro, "IEC-EQUIV-01 outputs {state:?} {op:?}");
+    assert_eq!(oo, ro, "IEC-STRUCT-01 outputs {state:?} {op:?}");
     assert_eq!(
         opt.state(),
         r.state(),
-        "IEC-EQUIV-01 state {state:?} {op:?}"
+        "IEC-STRUCT-01 state {state:?} {op:?}"
     );
     // Equal states are equal bytes: the structure is exactly the encoding of the reference
     // state (no stray flag bits, no stale START), and its accessors read the same members.
     assert_eq!(
         IecTimerOf::from_state(r.state()),
         Some(opt),
-        "IEC-EQUIV-01 canonical bytes {state:?} {op:?}"
+        "IEC-STRUCT-01 canonical bytes {state:?} {op:?}"
     );
     assert_eq!((opt.pt(), opt.et()), (r.state().pt, r.state().et));
     true
@@ -462,7 +462,7 @@ fn bounded_sequences_u4_from_initial_state() {
 /// The update on the real `u8` instance of the generic code (no test-only clock): every START
 /// (256) x every `now` (256) x every latched PT (256) for each of the four kinds, a running
 /// timer with ET = 0 called with IN held (the plain update path): 67 million steps of
-/// IEC-EQUIV-01 and the invariants. Every wrap of `now - START` on the 8-bit clock occurs, at
+/// IEC-STRUCT-01 and the invariants. Every wrap of `now - START` on the 8-bit clock occurs, at
 /// every START; the generic code is the same as on the 32-bit clock.
 #[test]
 fn exhaustive_u8_update_every_start_now_pt() {
@@ -571,7 +571,7 @@ fn arb_op_u32() -> impl Strategy<Value = Op> {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(20_000))]
 
-    /// IEC-EQUIV-01 and the invariants on the 32-bit clock, random states and operations
+    /// IEC-STRUCT-01 and the invariants on the 32-bit clock, random states and operations
     /// weighted to the wrap and to the ends of PT.
     #[test]
     fn proptest_u32_step_equivalence_and_invariants(state in arb_state_u32(), op in arb_op_u32()) {
@@ -650,4 +650,727 @@ proptest! {
             .collect();
         prop_ton_bank(start, &steps, &inputs, &all);
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// One property per requirement: the rule's text as a predicate over one operation (state
+// before, operation, state after, outputs), with the update in closed form and the clock's
+// modular arithmetic computed independently in u64; checked on the reference, the 16-byte
+// structure and, for TON calls on the 32-bit clock, the TON bank.
+// ---------------------------------------------------------------------------------------------
+
+use crate::cover::cover;
+
+/// The implementations an operation runs through.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IecImpl {
+    /// `IecTimerRef`.
+    Reference,
+    /// `IecTimerOf` (the 16-byte structure).
+    Structure,
+    /// `TonBank` (TON calls on the 32-bit clock only).
+    Bank,
+}
+
+/// `op` from `state` through `imp`: the state after and the outputs (Q, ET), or `None` when the
+/// implementation has no such operation.
+pub fn iec_run<C: ClockWord>(
+    imp: IecImpl,
+    state: IecState<C>,
+    op: Op,
+) -> Option<(IecState<C>, (bool, C))> {
+    match imp {
+        IecImpl::Reference => {
+            let mut t = IecTimerRef::from_state(state).expect("valid");
+            let out = apply(&mut t, op);
+            Some((t.state(), out))
+        }
+        IecImpl::Structure => {
+            let mut t = IecTimerOf::from_state(state).expect("valid");
+            let out = apply(&mut t, op);
+            Some((t.state(), out))
+        }
+        IecImpl::Bank => bank_run(state, op),
+    }
+}
+
+/// A TON call on a one-timer bank holding `state` (32-bit clock only).
+fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (bool, C))> {
+    let Op::Call(IecKind::Ton, now, input) = op else {
+        return None;
+    };
+    // The bank holds TON states as a scan leaves them: running only with IN = 1 and Q = 0.
+    if C::BITS != 32 || !matches!(state.kind, Some(IecKind::Ton)) || !iec_reachable(&state) {
+        return None;
+    }
+    let w = |c: C| u32::try_from(c.to_u64()).expect("32 bits");
+    let c = |v: u32| C::from_u64_wrapping(u64::from(v));
+    let mut bank = TonBank::<1>::new();
+    let s32 = IecState {
+        kind: state.kind,
+        input: state.input,
+        running: state.running,
+        start: w(state.start),
+        pt: w(state.pt),
+        et: w(state.et),
+        q: state.q,
+    };
+    assert!(
+        bank.set(0, s32),
+        "IEC-BANK-01: the bank takes every valid TON state"
+    );
+    bank.scan(now, &[input.input], &[input.pt]);
+    let after = bank.get(0).expect("timer 0");
+    let out = bank.output(0).expect("timer 0");
+    assert_eq!(
+        (out.q, out.et),
+        (after.q, after.et),
+        "IEC-BANK-01: outputs are the members"
+    );
+    Some((
+        IecState {
+            kind: after.kind,
+            input: after.input,
+            running: after.running,
+            start: c(after.start),
+            pt: c(after.pt),
+            et: c(after.et),
+            q: after.q,
+        },
+        (out.q, c(out.et)),
+    ))
+}
+
+/// The preset an instruction latches, computed here: negative taken as 0, saturated at the
+/// clock's top on the narrow clocks.
+fn latched<C: ClockWord>(pt: Time) -> u64 {
+    u64::try_from(pt.as_millis().max(0))
+        .expect("non-negative")
+        .min(C::MAX.to_u64())
+}
+
+/// `now - start` modulo 2^BITS on the CPU's millisecond clock, computed in u64.
+fn elapsed<C: ClockWord>(now: CpuTime, start: C) -> u64 {
+    let m = 1u64 << C::BITS;
+    (now.as_millis() % m + m - start.to_u64()) % m
+}
+
+fn q_while(kind: IecKind) -> bool {
+    matches!(kind, IecKind::Tp | IecKind::Tof)
+}
+
+/// The update in closed form (IEC-START-01's `elapsed = now - START`, IEC-EXPIRY-01).
+fn updated<C: ClockWord>(st: IecState<C>, now: CpuTime, kind: IecKind) -> IecState<C> {
+    if !st.running {
+        return st;
+    }
+    let e = elapsed(now, st.start);
+    if e >= st.pt.to_u64() {
+        IecState {
+            running: false,
+            start: C::ZERO,
+            et: st.pt,
+            q: !q_while(kind),
+            ..st
+        }
+    } else {
+        IecState {
+            et: C::from_u64_wrapping(e),
+            q: q_while(kind),
+            ..st
+        }
+    }
+}
+
+/// The states a running timer is in after a call of its kind (the per-kind rules are stated
+/// from these): Q is the kind's status while timing, and the stored IN keeps TON and TONR
+/// running (1) and TOF timing (0).
+fn iec_reachable<C: ClockWord>(st: &IecState<C>) -> bool {
+    !st.running
+        || st.kind.is_some_and(|k| {
+            st.q == q_while(k)
+                && match k {
+                    IecKind::Ton | IecKind::Tonr => st.input,
+                    IecKind::Tof => !st.input,
+                    IecKind::Tp => true,
+                }
+        })
+}
+
+/// Every IEC rule on one operation through `imp`. Returns whether it was checked.
+pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> bool {
+    if !st.is_valid() {
+        return false;
+    }
+    let Some((post, (q, et))) = iec_run(imp, st, op) else {
+        return false;
+    };
+    assert_eq!(
+        (q, et),
+        (post.q, post.et),
+        "IEC-ACCESS-01: {imp:?}: outputs are Q and ELAPSED"
+    );
+    assert!(
+        post.et <= post.pt,
+        "IEC-ET-RANGE-01: {imp:?}: ET <= PT: {st:?} {op:?} -> {post:?}"
+    );
+    assert!(
+        post.pt.to_u64() <= i32::MAX as u64,
+        "IEC-ET-RANGE-01: {imp:?}: PT is a non-negative TIME"
+    );
+    match op {
+        Op::Call(kind, now, i) => call_rules(imp, st, kind, now, i, post),
+        Op::ReadQ(now) | Op::ReadEt(now) => {
+            let expected = match st.kind {
+                Some(kind) => updated(st, now, kind),
+                None => st,
+            };
+            assert_eq!(
+                post, expected,
+                "IEC-ACCESS-01: {imp:?}: a read of Q or ELAPSED updates first, nothing else: {st:?} {op:?}"
+            );
+            cover!(
+                st.running && !post.running,
+                "IEC-ACCESS-01: a read finds the time run out"
+            );
+        }
+        Op::Rt => assert_eq!(
+            post,
+            IecState {
+                input: false,
+                running: false,
+                start: C::ZERO,
+                et: C::ZERO,
+                q: false,
+                ..st
+            },
+            "IEC-RT-01: {imp:?}: RT zeroes ET, Q, running and the stored IN; PT stays"
+        ),
+        Op::PtCoil(pt) => {
+            let p = latched::<C>(pt);
+            assert_eq!(
+                post.pt.to_u64(),
+                p,
+                "IEC-PT-COIL-01: {imp:?}: the PT coil loads the preset"
+            );
+            assert_eq!(
+                post.et.to_u64(),
+                st.et.to_u64().min(p),
+                "IEC-PT-COIL-01: {imp:?}: ET is clamped to it"
+            );
+            assert_eq!(
+                (post.kind, post.input, post.running, post.start, post.q),
+                (st.kind, st.input, st.running, st.start, st.q),
+                "IEC-PT-COIL-01: {imp:?}: no update; a running timer uses it from its next update"
+            );
+            cover!(
+                st.running && p > st.et.to_u64(),
+                "IEC-PT-COIL-01: PT loaded into a running timer"
+            );
+        }
+        Op::RunStopRun(retentive) => {
+            let expected = if retentive { st } else { IecState::default() };
+            assert_eq!(
+                post, expected,
+                "IEC-RETAIN-01: {imp:?}: RUN-STOP-RUN keeps a retentive structure, clears another"
+            );
+        }
+    }
+    true
+}
+
+fn call_rules<C: ClockWord>(
+    imp: IecImpl,
+    st: IecState<C>,
+    kind: IecKind,
+    now: CpuTime,
+    i: IecInput,
+    post: IecState<C>,
+) {
+    let now_c = C::from_u64_wrapping(now.as_millis());
+    let e = elapsed(now, st.start);
+    let p = latched::<C>(i.pt);
+    let same_kind = st.kind == Some(kind);
+    let running = st.running && same_kind;
+    let expired_now = running && e >= st.pt.to_u64();
+    let rising = i.input && !st.input;
+    let falling = !i.input && st.input;
+    // The starting edges of the manual (IEC-START-01): TON's rising IN, TOF's falling IN, TP's
+    // rising IN with no pulse running (after the call's update).
+    let start_edge = match kind {
+        IecKind::Ton => rising,
+        IecKind::Tof => falling,
+        IecKind::Tp => rising && (!st.running || expired_now || !same_kind),
+        IecKind::Tonr => false,
+    };
+    if start_edge && (kind != IecKind::Tp || same_kind || !st.running) {
+        assert_eq!(
+            post.pt.to_u64(),
+            p,
+            "IEC-PT-LATCH-01: {imp:?}: the start latches PT"
+        );
+        if p > 0 {
+            assert!(
+                post.running && post.start == now_c && post.et == C::ZERO,
+                "IEC-START-01: {imp:?}: the starting edge copies the clock into START: {st:?} {kind:?} {now:?} {i:?} -> {post:?}"
+            );
+            assert_eq!(
+                post.q,
+                q_while(kind),
+                "IEC-START-01: {imp:?}: Q while timing"
+            );
+        } else {
+            assert!(
+                !post.running && post.et == C::ZERO && post.q == (kind == IecKind::Ton),
+                "IEC-PT0-01: {imp:?}: PT = 0: the starting call updates (TON on, no TP pulse, TOF off): {st:?} {kind:?} {i:?} -> {post:?}"
+            );
+        }
+        if i.pt.as_millis() < 0 {
+            assert_eq!(
+                post.pt,
+                C::ZERO,
+                "IEC-ET-RANGE-01: {imp:?}: a negative PT is taken as 0"
+            );
+        }
+    }
+    cover!(start_edge && p == 0, "IEC-PT0-01: a start with PT = 0");
+    // IEC-EDGE-01: a stopped timer starts only on its starting edge (TONR: IN = 1, R = 0).
+    if !st.running && post.running {
+        let edge = match kind {
+            IecKind::Tp | IecKind::Ton => rising,
+            IecKind::Tof => falling,
+            IecKind::Tonr => i.input && !i.reset,
+        };
+        assert!(
+            edge,
+            "IEC-EDGE-01: {imp:?}: {kind:?} started without its starting edge: {st:?} {i:?}"
+        );
+    }
+    if !iec_reachable(&st) {
+        return;
+    }
+    // A running timer that the call keeps timing: the update (IEC-EXPIRY-01, IEC-WRAP-01).
+    let continues = running
+        && match kind {
+            IecKind::Ton => i.input && st.input,
+            IecKind::Tof => !i.input && !st.input,
+            IecKind::Tp => !rising,
+            IecKind::Tonr => i.input && !i.reset,
+        };
+    if continues {
+        if e >= st.pt.to_u64() {
+            let et = if kind == IecKind::Tp && !i.input {
+                C::ZERO
+            } else {
+                st.pt
+            };
+            assert!(
+                !post.running && post.et == et && post.q != q_while(kind),
+                "IEC-EXPIRY-01: {imp:?}: at ET >= PT the time has run out (ET = PT; TON/TONR Q = 1, TP/TOF Q = 0): {st:?} {kind:?} {now:?} -> {post:?}"
+            );
+        } else {
+            assert!(
+                post.running && post.et.to_u64() == e && post.q == q_while(kind),
+                "IEC-WRAP-01: {imp:?}: ET = now - START modulo 2^{}: {st:?} {now:?} -> {post:?}",
+                C::BITS
+            );
+        }
+        // PT at the box is ignored while running (IEC-PT-LATCH-01).
+        assert_eq!(
+            post.pt, st.pt,
+            "IEC-PT-LATCH-01: {imp:?}: PT latched while running"
+        );
+    }
+    cover!(
+        continues && e + 1 == st.pt.to_u64(),
+        "IEC-EXPIRY-01: one ms before PT"
+    );
+    cover!(
+        continues && e == st.pt.to_u64(),
+        "IEC-EXPIRY-01: exactly at PT"
+    );
+    cover!(
+        continues && st.start.to_u64() > now.as_millis() % (1u64 << C::BITS),
+        "IEC-WRAP-01: the clock wrapped since START"
+    );
+    match kind {
+        IecKind::Tp => {
+            if running && !expired_now {
+                assert!(
+                    post.running && post.start == st.start && post.pt == st.pt && post.q,
+                    "TP-IN-01: {imp:?}: IN changes have no effect while the pulse runs"
+                );
+            }
+            if !post.running && same_kind && !start_edge {
+                let et = if !i.input {
+                    C::ZERO
+                } else if expired_now {
+                    st.pt
+                } else {
+                    st.et
+                };
+                assert_eq!(
+                    post.et, et,
+                    "TP-IN-01: {imp:?}: after the pulse ET stays at PT while IN = 1, 0 when IN = 0: {st:?} {i:?} -> {post:?}"
+                );
+            }
+            if expired_now && rising {
+                assert_eq!(
+                    post.pt.to_u64(),
+                    p,
+                    "TP-RETRIGGER-01: {imp:?}: a new pulse latches PT"
+                );
+                if p > 0 {
+                    assert!(
+                        post.running && post.start == now_c && post.q,
+                        "TP-RETRIGGER-01: {imp:?}: a rising IN in the call where the pulse runs out starts a new one: {st:?} {now:?} -> {post:?}"
+                    );
+                }
+            }
+            cover!(
+                expired_now && rising,
+                "TP-RETRIGGER-01: rising IN as the pulse runs out"
+            );
+        }
+        IecKind::Ton => {
+            if !i.input {
+                assert!(
+                    !post.running && !post.q && post.et == C::ZERO,
+                    "TON-IN-01: {imp:?}: IN = 0 resets and stops: {st:?} -> {post:?}"
+                );
+            }
+        }
+        IecKind::Tof => {
+            if i.input {
+                assert!(
+                    !post.running && post.q && post.et == C::ZERO,
+                    "TOF-IN-01: {imp:?}: IN = 1: Q = 1, reset and stopped: {st:?} -> {post:?}"
+                );
+            } else if !st.running && !st.input && same_kind {
+                assert_eq!(
+                    (post.et, post.q),
+                    (st.et, st.q),
+                    "TOF-IN-01: {imp:?}: after the delay ET holds until IN returns to 1"
+                );
+            }
+        }
+        IecKind::Tonr => {
+            if i.reset {
+                assert!(
+                    !post.running && !post.q && post.et == C::ZERO && post.start == C::ZERO,
+                    "TONR-R-01: {imp:?}: R resets ET and Q and stops, before anything else: {st:?} {i:?} -> {post:?}"
+                );
+                return;
+            }
+            if st.q && same_kind {
+                assert!(
+                    post.q,
+                    "TONR-IN-01: {imp:?}: Q stays 1 after expiry until R"
+                );
+            }
+            if !i.input && running && !expired_now {
+                assert!(
+                    !post.running && post.et.to_u64() == e && !post.q,
+                    "TONR-IN-01: {imp:?}: IN = 0 stops without reset; ET keeps the accumulated time: {st:?} {now:?} -> {post:?}"
+                );
+            }
+            if i.input && !st.running && !st.q {
+                assert_eq!(
+                    post.pt.to_u64(),
+                    p,
+                    "TONR-RESUME-01: {imp:?}: resumes with the PT of that moment"
+                );
+                if st.et.to_u64() < p {
+                    assert!(
+                        post.running
+                            && post.et == st.et
+                            && elapsed(now, post.start) == st.et.to_u64(),
+                        "TONR-RESUME-01: {imp:?}: resumes from the accumulated ET (START shifted back): {st:?} {now:?} {i:?} -> {post:?}"
+                    );
+                } else {
+                    assert!(
+                        !post.running && post.q && post.et == post.pt,
+                        "TONR-RESUME-01: {imp:?}: an accumulated ET at or above the new PT has run out"
+                    );
+                }
+            }
+            cover!(
+                i.input && !st.running && !st.q && st.et > C::ZERO,
+                "TONR-RESUME-01: resume with time accumulated"
+            );
+        }
+    }
+    if !continues && st.running && same_kind {
+        // IEC-PT-LATCH-01 as a metamorphic relation: the same call with another PT gives the
+        // same result while the timer runs (unless this call starts it anew).
+        let other = IecInput {
+            pt: Time::from_millis(i.pt.as_millis().wrapping_add(3)),
+            ..i
+        };
+        if !start_edge {
+            let (alt, _) = iec_run(imp, st, Op::Call(kind, now, other)).expect("same impl");
+            assert_eq!(
+                alt, post,
+                "IEC-PT-LATCH-01: {imp:?}: PT ignored while running"
+            );
+        }
+    }
+}
+
+/// Every IEC rule through every implementation (the harness body).
+pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
+    let mut checked = false;
+    for imp in [IecImpl::Reference, IecImpl::Structure, IecImpl::Bank] {
+        checked |= check_iec_rules(imp, st, op);
+    }
+    checked
+}
+
+/// IEC-STRUCT-01: the structure is 16 bytes, `#[repr(C)]` with START, PT, ET at offsets 0, 4,
+/// 8 and the flags at 12; its bytes round-trip through `to_bytes`/`from_bytes`, which accepts
+/// exactly the valid states.
+pub fn prop_struct(state: IecState<u32>) {
+    assert_eq!(
+        core::mem::size_of::<plc_timers::iec::IecTimer>(),
+        16,
+        "IEC-STRUCT-01: 16 bytes"
+    );
+    let Some(t) = plc_timers::iec::IecTimer::from_state(state) else {
+        assert!(
+            !state.is_valid(),
+            "IEC-STRUCT-01: every valid state has a structure"
+        );
+        return;
+    };
+    let bytes = t.to_bytes();
+    assert_eq!(
+        bytes[0..4],
+        state.start.to_ne_bytes(),
+        "IEC-STRUCT-01: START at offset 0"
+    );
+    assert_eq!(
+        bytes[4..8],
+        state.pt.to_ne_bytes(),
+        "IEC-STRUCT-01: PT at offset 4"
+    );
+    assert_eq!(
+        bytes[8..12],
+        state.et.to_ne_bytes(),
+        "IEC-STRUCT-01: ET at offset 8"
+    );
+    assert_eq!(bytes[13..], [0; 3], "IEC-STRUCT-01: padding zero");
+    assert_eq!(
+        plc_timers::iec::IecTimer::from_bytes(bytes),
+        Some(t),
+        "IEC-STRUCT-01: the bytes restore the structure"
+    );
+    assert_eq!(
+        t.state(),
+        state,
+        "IEC-STRUCT-01: the abstraction inverts from_state"
+    );
+}
+
+/// The rule driver on the 4-bit clock: every valid state with PT in {0, 1, 2, 5, 14, 15} (every
+/// START, ET <= PT, kind, IN, running, Q) x every operation of [`all_ops_u4`]. Small scope:
+/// the rules compare `now - START` modulo 16 with PT and 0, which every (START, now) pair of
+/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_rules`) runs the same body on
+/// the 32-bit clock.
+#[test]
+fn exhaustive_u4_iec_rules() {
+    let states: Vec<IecState<U4>> = all_states_u4()
+        .into_iter()
+        .filter(|s| [0, 1, 2, 5, 14, 15].contains(&s.pt.0))
+        .collect();
+    let ops = all_ops_u4();
+    let (a, b) = states.split_at(states.len() / 2);
+    let hits = thread::scope(|scope| {
+        let workers: Vec<_> = [a, b]
+            .into_iter()
+            .map(|part| {
+                let ops = &ops;
+                scope.spawn(move || {
+                    crate::cover::collect(|| {
+                        let mut n = 0u64;
+                        for &st in part {
+                            for &op in ops {
+                                n += u64::from(prop_iec_rules(st, op));
+                            }
+                        }
+                        n
+                    })
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .map(|w| w.join().expect("worker finished"))
+            .collect::<Vec<_>>()
+    });
+    let n: u64 = hits.iter().map(|(n, _)| n).sum();
+    crate::cover::require(crate::cover::merge(hits.into_iter().map(|(_, h)| h)));
+    assert_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
+}
+
+/// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_rules`; here
+/// every START x now x PT of a running TON, TP, TOF and TONR on `u8` (IEC-WRAP-01 at every
+/// wrap), with IN held.
+#[test]
+fn exhaustive_u8_wrap_rules() {
+    crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], || {
+        for kind in IecKind::ALL {
+            let input = kind != IecKind::Tof;
+            for start in (0..=255u8).step_by(3) {
+                for pt in [0u8, 1, 2, 127, 128, 200, 254, 255] {
+                    let st = IecState {
+                        kind: Some(kind),
+                        input,
+                        running: true,
+                        start,
+                        pt,
+                        et: 0,
+                        q: q_while(kind),
+                    };
+                    for now in 0..=511u64 {
+                        let op = Op::Call(
+                            kind,
+                            CpuTime::from_millis(now),
+                            IecInput::new(input, Time::from_millis(9)),
+                        );
+                        assert!(prop_iec_rules(st, op));
+                    }
+                }
+            }
+        }
+    });
+}
+
+/// The bolero harness of every IEC rule on the 32-bit clock (reference, structure, bank):
+/// random states and operations under `cargo test`, every valid state and operation under
+/// Kani. `#[kani::unwind(4)]`: the loop over the three implementations (3 iterations and its
+/// exit); the bank's scan loops over its one timer (1 iteration).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+fn kani_iec_rules() {
+    bolero::check!()
+        .with_type::<(IecState<u32>, Op)>()
+        .with_iterations(20_000)
+        .for_each(|(st, op)| {
+            let st = IecState {
+                pt: st.pt.min(i32::MAX as u32),
+                et: st.et.min(st.pt.min(i32::MAX as u32)),
+                ..*st
+            };
+            prop_iec_rules(st, *op);
+            prop_struct(st);
+        });
+}
+
+/// IEC-WRAP-01 over gaps on the 32-bit clock: a TON started at `t0` and updated `gap` ms later
+/// shows ET = min(gap, PT) for every gap below 2^32 ms (2^31 and more included), and a gap of
+/// 2^32 ms or more aliases to the gap 2^32 ms shorter.
+pub fn prop_wrap_gap(t0: u64, gap: u64, pt: u32) {
+    let pt = Time::from_millis(i32::try_from(pt >> 1).expect("31 bits"));
+    let (t0, gap) = (CpuTime::from_millis(t0 >> 2), gap >> 2);
+    let now = t0.add_millis(gap);
+    let mut r = IecTimerRef::<u32>::new();
+    let mut s = plc_timers::iec::IecTimer::new();
+    for t in [&mut r as &mut dyn IecTimerOps<u32>, &mut s] {
+        t.call(IecKind::Ton, t0, IecInput::new(true, pt));
+        let et = t.call(IecKind::Ton, now, IecInput::new(true, pt)).et;
+        let seen = gap % (1 << 32);
+        let pt = u64::try_from(pt.as_millis()).expect("non-negative");
+        assert_eq!(
+            u64::from(et),
+            seen.min(pt),
+            "IEC-WRAP-01: a gap of {gap} ms shows ET = min(gap mod 2^32, PT)"
+        );
+    }
+    cover!(
+        (1 << 31..1 << 32).contains(&gap),
+        "IEC-WRAP-01: a gap of 2^31 ms or more, exact"
+    );
+}
+
+/// The bolero harness of IEC-WRAP-01 over gaps (no loop but the two implementations:
+/// `#[kani::unwind(3)]`).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(3))]
+fn kani_wrap_gap() {
+    bolero::check!()
+        .with_type::<(u64, u64, u32)>()
+        .with_iterations(20_000)
+        .for_each(|&(t0, gap, pt)| {
+            prop_wrap_gap(t0, gap >> 28, pt);
+            prop_wrap_gap(t0, gap, pt);
+        });
+}
+
+/// IEC-WRAP-01 at the boundaries: gaps 2^31 - 1, 2^31, 2^32 - 1 are exact, 2^32 and 2^32 + 5
+/// alias.
+#[test]
+fn wrap_gap_boundaries() {
+    crate::cover::check(|| {
+        for gap in [
+            0,
+            1,
+            (1 << 31) - 1,
+            1 << 31,
+            (1 << 32) - 1,
+            1 << 32,
+            (1 << 32) + 5,
+        ] {
+            for pt in [0, 2, u32::MAX] {
+                // prop_wrap_gap takes its arguments times 4 (its generator's range).
+                prop_wrap_gap(4 * 12_345, 4 * gap, pt);
+            }
+        }
+    });
+}
+
+/// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock (`#[kani::unwind(4)]`:
+/// the loop over the 3 operations and its exit).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+fn kani_sequence_equivalence() {
+    bolero::check!()
+        .with_type::<[Op; 3]>()
+        .with_iterations(20_000)
+        .for_each(|ops| prop_sequence_equivalence::<u32>(ops));
+}
+
+/// IEC-STRUCT-01 one step on the 32-bit clock, every valid state and operation (no loop).
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_step_equivalence() {
+    bolero::check!()
+        .with_type::<(IecState<u32>, Op)>()
+        .with_iterations(20_000)
+        .for_each(|&(st, op)| {
+            let st = IecState {
+                pt: st.pt.min(i32::MAX as u32),
+                et: st.et.min(st.pt.min(i32::MAX as u32)),
+                ..st
+            };
+            prop_step_equivalence(st, op);
+            prop_invariants(st, op);
+            if let Op::Call(kind, now, input) = op {
+                prop_table_8_20(st, kind, now, input, Time::from_millis(7));
+            }
+        });
+}
+
+/// IEC-BANK-01: a bank of 4 TONs over 3 scans of any inputs, presets and times against 4
+/// reference TONs (`#[kani::unwind(5)]`: the scan's and the check's loops over 4 timers, and
+/// the 3 scans, each with its exit).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_ton_bank() {
+    bolero::check!()
+        .with_type::<(u32, [u32; 3], [[bool; 4]; 3], [Time; 4])>()
+        .with_iterations(20_000)
+        .for_each(|(start, steps, inputs, pts)| {
+            let steps = steps.map(u64::from);
+            prop_ton_bank::<4>(u64::from(*start), &steps, inputs, pts);
+        });
 }

@@ -1,11 +1,18 @@
-//! Properties of every block, each written once as a plain function and driven two ways:
+//! Properties of every block, each written once as a plain function and driven three ways:
 //!
 //! - by a concrete driver that `cargo test --test proofs` runs: exhaustive enumeration where the
-//!   domain is finite and small enough, proptest otherwise;
-//! - by a `#[kani::proof]` harness, compiled only under `cfg(kani)`, for `cargo kani --tests`.
+//!   domain is finite and small enough (the small-scope argument is in each driver's doc);
+//! - by a `bolero` harness, `#[test]` and, under `cfg(kani)`, also `#[kani::proof]`: one body
+//!   that `cargo test` runs on random values, `cargo kani --tests` proves over symbolic ones,
+//!   and `cargo bolero` can fuzz;
+//! - proptest, where a generator weighted to the edge cases serves better.
 //!
-//! One module per family. See the README's "Verification" section for what each harness proves
-//! and what has been run where.
+//! Every behavioural requirement has a property of its own whose assertion messages start with
+//! its ID (`tests/spec_catalog.rs` checks this), with an oracle written from the rule's text.
+//! `cover!` marks premises that must be reachable ([`cover`]). One module per family. See the
+//! README's "Verification" section for what runs where.
+
+mod cover;
 
 mod counter;
 mod iec;

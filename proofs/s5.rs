@@ -497,3 +497,864 @@ fn exhaustive_area_tick_per_base() {
     }
     assert_eq!(checked, 1000 * 4 * 4 * 5, "every case checked");
 }
+
+// ---------------------------------------------------------------------------------------------
+// One property per requirement. The oracle is the rule's text as a predicate over one step
+// (pre-state, ticks, input, post-state, outputs), with a closed-form model of the tick rule
+// (`ticked`); each property checks every implementation: the reference, the packed word, a
+// timer memory area (tick per base, then the box's STL sequence FR, SP..SF, R, and the reads L,
+// LC, A) and, outside Kani, an `S5Timer` and an area box called at a time that gives the ticks.
+// ---------------------------------------------------------------------------------------------
+
+use crate::cover::cover;
+
+/// One step of the S5 box: the kind, the state before, the OS ticks of the timer's base since
+/// its previous execution, and the inputs.
+#[derive(Clone, Copy, Debug, bolero::TypeGenerator)]
+pub struct S5Case {
+    /// The box.
+    pub kind: S5Kind,
+    /// The state before (valid).
+    pub state: S5State,
+    /// The ticks of the timer's base before the execution.
+    pub ticks: u64,
+    /// S, R, FR, TV.
+    pub input: S5Input,
+}
+
+/// Whether the kind is an on-delay (written here from LAD manual §9.5-9.6, not taken from the
+/// reference).
+fn on_delay(kind: S5Kind) -> bool {
+    matches!(kind, S5Kind::SOdt | S5Kind::SOdts)
+}
+
+/// The tick rule in closed form (S5TMR-TICK-01, S5TMR-EXPIRE-01): `n` ticks take
+/// `min(n, value)` units off a running timer; reaching 0 stops it and Q takes the status its
+/// start chose. A stopped timer, or one started with value 0, is left alone.
+pub fn ticked(st: S5State, n: u64) -> S5State {
+    if !st.running || st.value == 0 {
+        return st;
+    }
+    if n >= u64::from(st.value) {
+        S5State {
+            running: false,
+            value: 0,
+            q: st.q_on_expiry,
+            q_on_expiry: false,
+            ..st
+        }
+    } else {
+        S5State {
+            value: st.value - n as u16,
+            ..st
+        }
+    }
+}
+
+/// What the start logic of the execution sees: the ticks applied, and a running timer of value
+/// 0 found run out (S5TMR-ZERO-01).
+pub fn seen(st: S5State, n: u64) -> S5State {
+    let t = ticked(st, n);
+    if t.running && t.value == 0 {
+        S5State {
+            running: false,
+            q: t.q_on_expiry,
+            q_on_expiry: false,
+            ..t
+        }
+    } else {
+        t
+    }
+}
+
+impl S5Case {
+    fn fr_rising(&self) -> bool {
+        self.input.fr && !self.state.fr_prev
+    }
+    /// The S memory after FR (S5TMR-FR-01).
+    fn memory(&self) -> bool {
+        self.state.s_prev && !self.fr_rising()
+    }
+    fn rising(&self) -> bool {
+        self.input.s && !self.memory()
+    }
+    fn falling(&self) -> bool {
+        !self.input.s && self.memory()
+    }
+    /// The kind's start signal (S5TMR-EDGE-01).
+    fn starts(&self) -> bool {
+        if self.kind == S5Kind::SOffdt {
+            self.falling()
+        } else {
+            self.rising()
+        }
+    }
+    fn with_state(self, state: S5State) -> S5Case {
+        S5Case { state, ..self }
+    }
+    fn with_input(self, input: S5Input) -> S5Case {
+        S5Case { input, ..self }
+    }
+}
+
+/// The implementations a step runs through.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum S5Impl {
+    /// `S5TimerRef::tick` then `execute`.
+    Reference,
+    /// `TimerWord::tick` then `execute`.
+    Word,
+    /// `TimerMemory::tick` of the timer's base, then the STL operations `FR`, `SP`..`SF`, `R`.
+    AreaStl,
+    /// `S5Timer::call` at a CPU time that gives the ticks (a division by the base: not under
+    /// Kani, which has `kani_s5_timer_call_*` with a fixed base).
+    Timer,
+    /// `TimerMemory::call` (`advance_to`, then the box) at that time.
+    AreaCall,
+}
+
+/// Every implementation a harness body checks.
+#[cfg(not(kani))]
+pub const IMPLS: [S5Impl; 5] = [
+    S5Impl::Reference,
+    S5Impl::Word,
+    S5Impl::AreaStl,
+    S5Impl::Timer,
+    S5Impl::AreaCall,
+];
+/// Every implementation a harness body checks (without the divisions by a symbolic base).
+#[cfg(kani)]
+pub const IMPLS: [S5Impl; 3] = [S5Impl::Reference, S5Impl::Word, S5Impl::AreaStl];
+
+/// The CPU time, from a previous execution at 0, that gives `ticks` ticks of `base`.
+fn time_for(ticks: u64, base: TimeBase) -> CpuTime {
+    let b = u64::from(base.millis());
+    CpuTime::from_millis(ticks.min(u64::MAX / b) * b)
+}
+
+/// One step through `imp`: the state after and the outputs; for the area, also the STL reads
+/// (`L`, `LC`, `A`) checked against the outputs (S5TMR-LOAD-01).
+pub fn run(imp: S5Impl, c: S5Case) -> (S5State, S5Output) {
+    let S5Case {
+        kind,
+        state,
+        ticks,
+        input,
+    } = c;
+    match imp {
+        S5Impl::Reference => reference_step(kind, state, ticks, input),
+        S5Impl::Word => {
+            let w = TimerWord::from_state(state)
+                .expect("a valid state")
+                .tick(ticks)
+                .execute(kind, input);
+            (w.state(), w.output())
+        }
+        S5Impl::AreaStl => {
+            // T 1 is the timer; T 0 a neighbour of another base that must not change.
+            let w = TimerWord::from_state(state).expect("a valid state");
+            let other = TimerWord::from_state(S5State {
+                running: true,
+                value: 5,
+                base: TimeBase::from_bits(state.base.bits() + 1),
+                ..S5State::RESET
+            })
+            .expect("valid");
+            let mut area = TimerMemory::<2>::from_words([other, w], CpuTime::ZERO);
+            area.tick(state.base, ticks);
+            let ops = [
+                area.fr(1, input.fr),
+                area.start(1, kind, input.s, input.tv),
+                area.reset(1, input.r),
+            ];
+            assert_eq!(ops, [Ok(()); 3], "timer 1 exists");
+            assert_eq!(
+                area.words()[0],
+                other,
+                "S5-AREA-01: T 0 of another base untouched"
+            );
+            let after = area.get(1).expect("timer 1 exists");
+            let out = S5Output {
+                q: area.status(1).expect("T 1"),
+                bi: area.load(1).expect("T 1"),
+                bcd: area.load_bcd(1).expect("T 1"),
+            };
+            (after, out)
+        }
+        S5Impl::Timer => {
+            let mut t = S5Timer::from_state(state, CpuTime::ZERO).expect("a valid state");
+            let out = t.call(kind, time_for(ticks, state.base), input);
+            (t.state(), out)
+        }
+        S5Impl::AreaCall => {
+            let w = TimerWord::from_state(state).expect("a valid state");
+            let mut area = TimerMemory::<1>::from_words([w], CpuTime::ZERO);
+            let out = area
+                .call(0, kind, time_for(ticks, state.base), input)
+                .expect("T 0");
+            (area.get(0).expect("T 0"), out)
+        }
+    }
+}
+
+/// S5TMR-TICK-01 and S5TMR-EXPIRE-01 on the OS tick alone, in every implementation that has
+/// one (the reference's `tick`, the word's `tick`, the area's per-base `tick`), against the
+/// closed form [`ticked`].
+pub fn prop_tick(state: S5State, n: u64) -> bool {
+    if !state.is_valid() {
+        return false;
+    }
+    let expected = ticked(state, n);
+    let mut r = S5TimerRef::from_state(state, CpuTime::ZERO).expect("valid");
+    r.tick(n);
+    let w = TimerWord::from_state(state).expect("valid").tick(n);
+    let mut area = TimerMemory::<1>::from_words(
+        [TimerWord::from_state(state).expect("valid")],
+        CpuTime::ZERO,
+    );
+    area.tick(state.base, n);
+    for (name, after) in [
+        ("reference", r.state()),
+        ("word", w.state()),
+        ("area", area.get(0).expect("T 0")),
+    ] {
+        assert_eq!(
+            after.value, expected.value,
+            "S5TMR-TICK-01: {name}: {n} ticks take min(n, value) units off a running timer: {state:?}"
+        );
+        assert_eq!(
+            (after.base, after.s_prev, after.fr_prev),
+            (state.base, state.s_prev, state.fr_prev),
+            "S5TMR-TICK-01: {name}: a tick changes only value and status"
+        );
+        assert_eq!(
+            (after.running, after.q),
+            (expected.running, expected.q),
+            "S5TMR-EXPIRE-01: {name}: at 0 the timer stops and Q takes its expiry status: {state:?} {n}"
+        );
+    }
+    let expires = state.running && state.value > 0 && n >= u64::from(state.value);
+    cover!(expires, "S5TMR-EXPIRE-01: a tick runs a timer out");
+    cover!(
+        state.running && state.value > 0 && n > 0 && !expires,
+        "S5TMR-TICK-01: a tick leaves time"
+    );
+    true
+}
+
+/// The status a timer of `kind` shows in the reachable states (the per-kind invariant, proved
+/// inductive by [`prop_kind_rules`]): the per-kind rules below are stated from these states.
+fn reachable(c: &S5Case) -> bool {
+    kind_invariant(c.kind, &c.state)
+}
+
+/// Every S5 rule on one step through `imp`. Returns whether the step was checked.
+pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
+    if !c.state.is_valid() {
+        return false;
+    }
+    let (post, out) = run(imp, c);
+    let seen = seen(c.state, c.ticks);
+    let tv = c.input.tv;
+    let loaded = |p: &S5State| p.value == tv.units() && p.base == tv.base();
+    rule_range(imp, c, &post, &out);
+    rule_r(imp, c, &post, &out);
+    rule_edge(imp, c, &post);
+    rule_zero(imp, c, &post);
+    rule_fr(imp, c, &post);
+    rule_expire_start(imp, c, &post);
+    if c.input.r {
+        return true;
+    }
+    if c.starts() {
+        assert!(
+            post.running && loaded(&post),
+            "S5TMR-EDGE-01: {imp:?}: a start loads TV and runs: {c:?} -> {post:?}"
+        );
+    }
+    // S5TMR-STOP-01: S = 0 stops S_PULSE and S_ODT; the value is kept, Q = 0.
+    if matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt) && !c.input.s && seen.running {
+        assert!(
+            !post.running && !post.q && post.value == seen.value && post.base == seen.base,
+            "S5TMR-STOP-01: {imp:?}: S = 0 stops, value kept, Q = 0: {c:?} -> {post:?}"
+        );
+    }
+    cover!(
+        matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt)
+            && !c.input.s
+            && seen.running
+            && seen.value > 0,
+        "S5TMR-STOP-01: a running S_PULSE or S_ODT sees S = 0"
+    );
+    if !reachable(&c) {
+        return true;
+    }
+    let held = !c.rising() && !c.falling();
+    match c.kind {
+        S5Kind::SPulse => {
+            if c.rising() {
+                assert!(
+                    post.q && post.running && loaded(&post),
+                    "SP-Q-01: {imp:?}: a rising S starts the pulse with TV, Q = 1 (even while it runs): {c:?}"
+                );
+            } else if !c.input.s {
+                assert!(
+                    !post.q && !post.running,
+                    "SP-Q-01: {imp:?}: S = 0: Q = 0: {c:?}"
+                );
+            } else {
+                assert_eq!(
+                    (post.running, post.q),
+                    (seen.running, seen.running),
+                    "SP-Q-01: {imp:?}: with S held Q = 1 exactly while it runs; Q = 0 when the time runs out: {c:?}"
+                );
+            }
+            cover!(
+                c.rising() && c.state.running,
+                "SP-Q-01: restart of a running pulse (FR)"
+            );
+        }
+        S5Kind::SPext => {
+            if c.rising() {
+                assert!(
+                    post.q && post.running && loaded(&post),
+                    "SE-RUN-ON-01: {imp:?}: a rising S (re)starts with TV, Q = 1: {c:?}"
+                );
+            } else {
+                assert_eq!(
+                    (post.running, post.q, post.value),
+                    (seen.running, seen.running, seen.value),
+                    "SE-RUN-ON-01: {imp:?}: runs on whatever S does, Q = 1 while it runs: {c:?}"
+                );
+            }
+            cover!(
+                !c.input.s && seen.running,
+                "SE-RUN-ON-01: runs on after S fell"
+            );
+        }
+        S5Kind::SOdt => {
+            if c.rising() {
+                assert!(
+                    !post.q && post.running && loaded(&post),
+                    "SD-Q-01: {imp:?}: a (re)start reloads TV with Q = 0: {c:?}"
+                );
+            } else if !c.input.s {
+                assert!(
+                    !post.q && !post.running,
+                    "SD-Q-01: {imp:?}: S = 0 stops, Q = 0: {c:?}"
+                );
+            } else {
+                assert_eq!(
+                    (post.running, post.q),
+                    (seen.running, !seen.running && seen.q),
+                    "SD-Q-01: {imp:?}: with S held Q = 1 once the time has run out: {c:?}"
+                );
+            }
+            cover!(
+                c.input.s && held && c.state.running && !seen.running,
+                "SD-Q-01: the on-delay runs out with S held"
+            );
+        }
+        S5Kind::SOdts => {
+            if c.state.q {
+                assert!(post.q, "SS-Q-01: {imp:?}: Q = 1 stays until R: {c:?}");
+            }
+            if c.rising() {
+                assert!(
+                    post.running && loaded(&post) && post.q == seen.q,
+                    "SS-Q-01: {imp:?}: a rising S restarts with TV, Q kept: {c:?}"
+                );
+            } else {
+                assert_eq!(
+                    (post.running, post.q, post.value),
+                    (seen.running, seen.q, seen.value),
+                    "SS-Q-01: {imp:?}: runs on whatever S does; Q = 1 once run out: {c:?}"
+                );
+            }
+            cover!(
+                c.rising() && seen.q,
+                "SS-Q-01: restart after expiry keeps Q = 1"
+            );
+        }
+        S5Kind::SOffdt => {
+            if c.falling() {
+                assert!(
+                    post.q && post.running && loaded(&post),
+                    "SF-Q-01: {imp:?}: a falling S starts the off-delay, Q = 1: {c:?}"
+                );
+            } else if c.rising() {
+                assert!(
+                    post.q && !post.running && post.value == seen.value,
+                    "SF-Q-01: {imp:?}: a rising S sets Q = 1 and stops the time, value kept: {c:?}"
+                );
+            } else {
+                assert_eq!(
+                    (post.running, post.q, post.value),
+                    (seen.running, seen.q, seen.value),
+                    "SF-Q-01: {imp:?}: without an edge Q is the status bit: kept, 0 when run out: {c:?}"
+                );
+            }
+            cover!(
+                c.rising() && c.state.running,
+                "SF-Q-01: a rising S stops a running off-delay"
+            );
+        }
+    }
+    true
+}
+
+/// S5TMR-RANGE-01 (and S5TMR-LOAD-01 for the area's reads): the value fits 0..=999; BCD is the
+/// valid three-digit form of BI with the base in bits 13-12 and bits 15-14 zero; the duration
+/// the BCD word shows (its digits times the base its bits 13-12 name) is the state's and at
+/// most 9 990 s.
+fn rule_range(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
+    assert!(
+        post.value <= 999,
+        "S5TMR-RANGE-01: {imp:?}: value {}",
+        post.value
+    );
+    let digits = [(out.bcd >> 8) & 0xF, (out.bcd >> 4) & 0xF, out.bcd & 0xF];
+    assert!(
+        digits.iter().all(|&d| d <= 9),
+        "S5TMR-RANGE-01: {imp:?}: BCD {:#06X} has a digit above 9",
+        out.bcd
+    );
+    assert_eq!(
+        digits[0] * 100 + digits[1] * 10 + digits[2],
+        out.bi,
+        "S5TMR-RANGE-01: {imp:?}: BCD {:#06X} is the BCD form of BI {}",
+        out.bcd,
+        out.bi
+    );
+    assert_eq!(
+        out.bcd >> 14,
+        0,
+        "S5TMR-RANGE-01: {imp:?}: bits 15-14 are never produced"
+    );
+    assert_eq!(
+        u8::try_from((out.bcd >> 12) & 3).expect("two bits"),
+        post.base.bits(),
+        "S5TMR-RANGE-01: {imp:?}: BCD bits 13-12 are the time base"
+    );
+    let base_ms = [10u32, 100, 1_000, 10_000][usize::from((out.bcd >> 12) & 3)];
+    let shown = u32::from(out.bi) * base_ms;
+    assert_eq!(
+        shown,
+        u32::from(post.value) * post.base.millis(),
+        "S5TMR-RANGE-01: {imp:?}: the BCD word shows the state's duration"
+    );
+    assert!(
+        shown <= 9_990_000,
+        "S5TMR-RANGE-01: {imp:?}: {shown} ms above 9 990 s"
+    );
+    assert_eq!(
+        (out.q, out.bi),
+        (post.q, post.value),
+        "S5TMR-LOAD-01: {imp:?}: A T and L T read the status and the value"
+    );
+    cover!(
+        out.bcd & 0x3000 == 0x3000 && out.bi == 999,
+        "S5TMR-RANGE-01: 9 990 s shown"
+    );
+    let _ = c;
+}
+
+/// S5TMR-R-01: R = 1 leaves the timer stopped, value and base 0, Q = 0, for every kind, running
+/// or not; the S memory still takes S. S5TMR-LOAD-01: after R, L and LC read 0.
+fn rule_r(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
+    if !c.input.r {
+        return;
+    }
+    assert!(
+        !post.running && post.value == 0 && post.base == TimeBase::Ms10 && !post.q,
+        "S5TMR-R-01: {imp:?}: R = 1 resets: {c:?} -> {post:?}"
+    );
+    assert_eq!(
+        post.s_prev, c.input.s,
+        "S5TMR-R-01: {imp:?}: the S memory is still updated"
+    );
+    assert_eq!(
+        (out.bi, out.bcd, out.q),
+        (0, 0, false),
+        "S5TMR-LOAD-01: {imp:?}: after R, L T and LC T read 0"
+    );
+    cover!(
+        c.state.running && c.starts(),
+        "S5TMR-R-01: R in the execution of a start"
+    );
+}
+
+/// S5TMR-EDGE-01: without its start signal (a change of S in the kind's direction, against the
+/// memory as FR leaves it) no timer starts or reloads, and the base changes only by R.
+fn rule_edge(imp: S5Impl, c: S5Case, post: &S5State) {
+    if c.starts() {
+        return;
+    }
+    assert!(
+        !post.running || c.state.running,
+        "S5TMR-EDGE-01: {imp:?}: started without a signal change: {c:?}"
+    );
+    assert!(
+        post.value <= c.state.value && (post.base == c.state.base || c.input.r),
+        "S5TMR-EDGE-01: {imp:?}: reloaded without a signal change: {c:?}"
+    );
+    cover!(
+        c.input.s && c.state.s_prev && !c.fr_rising(),
+        "S5TMR-EDGE-01: S held at 1"
+    );
+}
+
+/// S5TMR-ZERO-01: a timer started with the value 0 stays active in the starting execution and
+/// is found run out at its next execution, even with no tick.
+fn rule_zero(imp: S5Impl, c: S5Case, post: &S5State) {
+    if c.input.r {
+        return;
+    }
+    if c.starts() && c.input.tv.units() == 0 {
+        assert!(
+            post.running && post.value == 0,
+            "S5TMR-ZERO-01: {imp:?}: a start with value 0 stays active in its execution: {c:?}"
+        );
+    }
+    // The next execution: no new edge, and (for S_PULSE and S_ODT) S held at 1, which would
+    // otherwise stop the timer by its own rule.
+    let quiet = !c.rising()
+        && !c.falling()
+        && (c.input.s || !matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt));
+    if c.state.running && c.state.value == 0 && quiet {
+        assert!(
+            !post.running && post.q == c.state.q_on_expiry,
+            "S5TMR-ZERO-01: {imp:?}: found run out at the next execution: {c:?} -> {post:?}"
+        );
+    }
+    cover!(
+        c.state.running && c.state.value == 0 && quiet && c.ticks == 0,
+        "S5TMR-ZERO-01: value 0 processed with no tick"
+    );
+}
+
+/// S5TMR-EXPIRE-01 (the start's half): a start records the status the timer takes when its time
+/// runs out, 1 for S_ODT and S_ODTS, 0 for the others; running that time out gives it.
+fn rule_expire_start(imp: S5Impl, c: S5Case, post: &S5State) {
+    if c.input.r || !c.starts() {
+        return;
+    }
+    assert_eq!(
+        post.q_on_expiry,
+        on_delay(c.kind),
+        "S5TMR-EXPIRE-01: {imp:?}: a start of {:?} chooses its expiry status",
+        c.kind
+    );
+    if post.value > 0 {
+        let out = ticked(*post, u64::from(post.value));
+        assert_eq!(
+            out.q,
+            on_delay(c.kind),
+            "S5TMR-EXPIRE-01: {imp:?}: {:?} runs out with Q = {}",
+            c.kind,
+            on_delay(c.kind)
+        );
+    }
+}
+
+/// S5TMR-FR-01: a rising FR clears the S memory and does nothing else (the step equals the one
+/// from the state with the memory cleared and FR already 1); with S = 1 the kind's start sees a
+/// rising edge and restarts with TV (S_PULSE too, even while it runs); with S = 0 nothing
+/// starts. FR held at 1, or falling, does nothing.
+fn rule_fr(imp: S5Impl, c: S5Case, post: &S5State) {
+    let i = c.input;
+    let st = c.state;
+    if i.fr && !st.fr_prev {
+        let cleared = c.with_state(S5State {
+            s_prev: false,
+            fr_prev: true,
+            ..st
+        });
+        assert_eq!(
+            run(imp, cleared).0,
+            *post,
+            "S5TMR-FR-01: {imp:?}: a rising FR clears the S memory and nothing else: {c:?}"
+        );
+        if !i.r && i.s && c.kind != S5Kind::SOffdt {
+            assert!(
+                post.running && post.value == i.tv.units() && post.base == i.tv.base(),
+                "S5TMR-FR-01: {imp:?}: with S = 1 the timer restarts with TV: {c:?}"
+            );
+        }
+        if !i.s {
+            assert!(
+                !post.running || st.running,
+                "S5TMR-FR-01: {imp:?}: with S = 0 nothing starts: {c:?}"
+            );
+        }
+        cover!(
+            i.s && st.s_prev && st.running,
+            "S5TMR-FR-01: FR restarts a running timer with S held"
+        );
+    } else if st.fr_prev {
+        // FR held (1 -> 1) or falling (1 -> 0): the same step as from FR = 0 without FR.
+        let plain = c
+            .with_state(S5State {
+                fr_prev: false,
+                ..st
+            })
+            .with_input(S5Input { fr: false, ..i });
+        let (p, _) = run(imp, plain);
+        assert_eq!(
+            S5State { fr_prev: i.fr, ..p },
+            *post,
+            "S5TMR-FR-01: {imp:?}: FR held or falling does nothing: {c:?}"
+        );
+    }
+}
+
+/// Every S5 rule through every implementation (the harness body).
+pub fn prop_s5_rules(c: S5Case) -> bool {
+    let mut checked = true;
+    for imp in IMPLS {
+        checked &= check_s5_rules(imp, c);
+    }
+    if checked {
+        prop_sf_after_r(c);
+    }
+    checked
+}
+
+/// SF-Q-01: after R with S held at 1, Q stays 0 until S changes: R = 1 with S = 1, then an
+/// execution with S = 1, R = 0 and FR unchanged leaves Q = 0.
+fn prop_sf_after_r(c: S5Case) {
+    if c.kind != S5Kind::SOffdt || !c.input.r || !c.input.s {
+        return;
+    }
+    for imp in IMPLS {
+        let (post, _) = run(imp, c);
+        let next = S5Case {
+            state: post,
+            ticks: c.ticks,
+            input: S5Input {
+                r: false,
+                ..c.input
+            },
+            kind: c.kind,
+        };
+        let (after, _) = run(imp, next);
+        assert!(
+            !after.q,
+            "SF-Q-01: {imp:?}: after R with S held, Q stays 0 until S changes: {c:?}"
+        );
+    }
+}
+
+/// The values of the rule driver: every ordering of value and tick count (0, 1, 2 below and at
+/// the ticks 0..=4, and the top of the range) with the ticks below.
+const RULE_VALUES: [u16; 6] = [0, 1, 2, 3, 998, 999];
+/// Tick counts: none, 1..=4 (below, at and above the small values), 999, 1000 and the largest.
+const RULE_TICKS: [u64; 8] = [0, 1, 2, 3, 4, 999, 1000, u64::MAX];
+
+/// Every rule, exhaustively over a small scope that is complete for the rules: the rules only
+/// compare the value with the tick count (below, equal, above) and with 0 and 999, which the
+/// value and tick sets above reach in every combination; every base, every flag combination of
+/// a valid state, S, R and FR, and the six TVs (0, 1 and 999 units, every base). The full state
+/// space is covered by `exhaustive_step_equivalence_and_invariants`; Kani (`kani_s5_rules`)
+/// covers every value, tick count and TV.
+#[test]
+fn exhaustive_s5_rules() {
+    let cases: u64 = crate::cover::check(|| {
+        let mut n = 0;
+        for kind in S5Kind::ALL {
+            for value in RULE_VALUES {
+                for base in TimeBase::ALL {
+                    for f in 0..32u8 {
+                        let state = S5State {
+                            running: f & 1 != 0,
+                            value,
+                            base,
+                            q: f & 2 != 0,
+                            q_on_expiry: f & 4 != 0,
+                            s_prev: f & 8 != 0,
+                            fr_prev: f & 16 != 0,
+                        };
+                        for ticks in RULE_TICKS {
+                            for tv in tvs() {
+                                for bits in 0..8u8 {
+                                    let input = S5Input {
+                                        s: bits & 1 != 0,
+                                        r: bits & 2 != 0,
+                                        fr: bits & 4 != 0,
+                                        tv,
+                                    };
+                                    let c = S5Case {
+                                        kind,
+                                        state,
+                                        ticks,
+                                        input,
+                                    };
+                                    n += u64::from(prop_s5_rules(c));
+                                    if bits == 0 && tv == tvs()[0] {
+                                        prop_tick(state, ticks);
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        n
+    });
+    assert_eq!(
+        cases,
+        5 * 6 * 4 * 24 * 8 * 6 * 8,
+        "every valid case checked"
+    );
+}
+
+/// The bolero harness of every S5 rule: random cases under `cargo test`, a proof over every
+/// kind, valid state, tick count and input under Kani (no loop but the three implementations:
+/// `#[kani::unwind(4)]` covers the loop over `IMPLS` (3 iterations under Kani) plus its exit).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+fn kani_s5_rules() {
+    bolero::check!()
+        .with_type::<S5Case>()
+        .with_iterations(20_000)
+        .for_each(|c| {
+            prop_s5_rules(*c);
+            prop_tick(c.state, c.ticks);
+        });
+}
+
+/// S5-EQUIV-01 for every state, tick count and input (no loop).
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_step_equivalence() {
+    bolero::check!()
+        .with_type::<S5Case>()
+        .with_iterations(20_000)
+        .for_each(|c| {
+            prop_step_equivalence(c.kind, c.state, c.ticks, c.input);
+            prop_invariants(c.kind, c.state, c.ticks, c.input);
+            prop_kind_rules(c.kind, c.state, c.ticks, c.input);
+        });
+}
+
+/// S5-EQUIV-01 on the bits of a word: valid exactly when its state is (no loop).
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_cell_word() {
+    bolero::check!()
+        .with_type::<u32>()
+        .with_iterations(20_000)
+        .for_each(|&w| {
+            prop_cell_word(w & 0x001F_FFFF);
+            prop_cell_word(w);
+        });
+}
+
+/// S5-AREA-01 on a four-timer area: `#[kani::unwind(5)]` covers the area's loop over its 4
+/// words and the check's loop over the 4 timers, each with its exit.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_area_tick() {
+    bolero::check!()
+        .with_type::<([S5State; 4], TimeBase, u64)>()
+        .with_iterations(20_000)
+        .for_each(|&(states, base, n)| {
+            prop_area_tick(states, base, n);
+        });
+}
+
+/// `S5Timer::call` = `S5TimerRef::call` at any time after the previous execution, one harness
+/// per base so that the tick count divides by a constant (`ticks_between`'s two divisions);
+/// the times are below 2^32 ms so that no division is wider than needed. No loop.
+pub fn prop_timer_call(c: S5Case, base: TimeBase, last: u32, dt: u32) {
+    let state = S5State { base, ..c.state };
+    let last = CpuTime::from_millis(u64::from(last));
+    let now = last.add_millis(u64::from(dt));
+    let mut r = S5TimerRef::from_state(state, last).expect("valid");
+    let mut t = S5Timer::from_state(state, last).expect("valid");
+    let (a, b) = (r.call(c.kind, now, c.input), t.call(c.kind, now, c.input));
+    assert_eq!(
+        a, b,
+        "S5-EQUIV-01: S5Timer::call outputs at {now:?} from {last:?}"
+    );
+    assert_eq!(t.state(), r.state(), "S5-EQUIV-01: S5Timer::call state");
+    assert_eq!(
+        (t.last_call(), r.last_call()),
+        (now, now),
+        "S5-EQUIV-01: last call"
+    );
+}
+
+macro_rules! timer_call_harness {
+    ($name:ident, $base:expr) => {
+        /// `S5Timer::call` against the reference for this base (see [`prop_timer_call`]).
+        #[test]
+        #[cfg_attr(kani, kani::proof)]
+        fn $name() {
+            bolero::check!()
+                .with_type::<(S5Case, u32, u32)>()
+                .with_iterations(5_000)
+                .for_each(|&(c, last, dt)| prop_timer_call(c, $base, last, dt % 200_000));
+        }
+    };
+}
+
+timer_call_harness!(kani_s5_timer_call_10ms, TimeBase::Ms10);
+timer_call_harness!(kani_s5_timer_call_100ms, TimeBase::Ms100);
+timer_call_harness!(kani_s5_timer_call_1s, TimeBase::S1);
+timer_call_harness!(kani_s5_timer_call_10s, TimeBase::S10);
+
+/// S5-AREA-01 with `advance_to` over three timers of any states: the area's clock moved from
+/// `from` to `to` gives each timer the ticks of its own base in `(from, to]`, as the reference
+/// counts them from the clock.
+pub fn prop_advance_to(states: [S5State; 3], from: u32, dt: u32) {
+    let from = CpuTime::from_millis(u64::from(from));
+    let to = from.add_millis(u64::from(dt));
+    let words = states.map(|s| TimerWord::from_state(s).expect("valid"));
+    let mut area = TimerMemory::<3>::from_words(words, from);
+    area.advance_to(to);
+    assert_eq!(
+        area.now(),
+        to,
+        "S5-AREA-01: the area's clock is at the new time"
+    );
+    for (i, &s) in states.iter().enumerate() {
+        let mut r = S5TimerRef::from_state(s, from).expect("valid");
+        r.tick(plc_timers::s5::ticks_between(from, to, s.base));
+        assert_eq!(
+            area.get(i),
+            Ok(r.state()),
+            "S5-AREA-01: advance_to gives timer {i} the ticks of its base"
+        );
+    }
+}
+
+/// `advance_to` over three timers: `#[kani::unwind(5)]` covers its loop over the 3 words, its
+/// loop over the 4 time bases (`TimeBase::ALL`), the per-base tick's loop over the 3 words and
+/// the check's loop over the 3 timers, each with its exit (at most 4 + 1).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_advance_to() {
+    bolero::check!()
+        .with_type::<([S5State; 3], u32, u32)>()
+        .with_iterations(20_000)
+        .for_each(|&(states, from, dt)| prop_advance_to(states, from, dt % 100_000));
+}
+
+/// S5-EQUIV-02: every sequence of three executions from power-up (any inputs and TVs, time
+/// steps from a tick-boundary set) through the reference, an `S5Timer`, the area's box and its
+/// STL operations. `#[kani::unwind(5)]`: the sequence loop runs 3 times and `advance_to` loops
+/// over the 4 time bases (the bound is the larger, 4, plus the exit); the area has one word.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_sequence_equivalence() {
+    const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
+    bolero::check!()
+        .with_type::<(S5Kind, [(u8, S5Input); 3])>()
+        .with_iterations(20_000)
+        .for_each(|&(kind, steps)| {
+            let steps = steps.map(|(d, i)| (DT[usize::from(d) % DT.len()], i));
+            prop_sequence_equivalence(kind, &steps);
+        });
+}

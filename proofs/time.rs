@@ -433,3 +433,204 @@ proptest! {
         prop_time_literal_round_trip(ms);
     }
 }
+
+/// TIME-RANGE-01: TIME is a signed 32-bit count of milliseconds: the literals of both ends
+/// parse to `i32::MIN` and `i32::MAX` ms, one past either end is `OutOfRange`, and a value
+/// `ms` exists (`from_millis_i64`) exactly when it is within the 32-bit range.
+pub fn prop_time_range(ms: i64) {
+    let inside = (-(1i64 << 31)..=(1i64 << 31) - 1).contains(&ms);
+    assert_eq!(
+        Time::from_millis_i64(ms).map(|t| i64::from(t.as_millis())),
+        inside.then_some(ms),
+        "TIME-RANGE-01: {ms} ms is a TIME exactly when it fits 32 bits"
+    );
+    let text = format!("T#{ms}MS");
+    match text.parse::<Time>() {
+        Ok(t) => assert!(
+            inside && i64::from(t.as_millis()) == ms,
+            "TIME-RANGE-01: {text} parses to itself"
+        ),
+        Err(e) => assert!(
+            !inside && e.kind == LiteralErrorKind::OutOfRange,
+            "TIME-RANGE-01: {text}: {e:?}"
+        ),
+    }
+}
+
+/// TIME-RANGE-01 at the ends, spelled as the manual does.
+#[test]
+fn time_range_ends() {
+    assert_eq!(
+        "T#-24D_20H_31M_23S_648MS"
+            .parse::<Time>()
+            .map(Time::as_millis),
+        Ok(i32::MIN),
+        "TIME-RANGE-01: the lower end"
+    );
+    assert_eq!(
+        "T#24D_20H_31M_23S_647MS"
+            .parse::<Time>()
+            .map(Time::as_millis),
+        Ok(i32::MAX),
+        "TIME-RANGE-01: the upper end"
+    );
+    for past in ["T#-24D_20H_31M_23S_649MS", "T#24D_20H_31M_23S_648MS"] {
+        assert_eq!(
+            past.parse::<Time>().map_err(|e| e.kind),
+            Err(LiteralErrorKind::OutOfRange),
+            "TIME-RANGE-01: {past} is one past an end"
+        );
+    }
+    for ms in [
+        i64::from(i32::MIN) - 1,
+        i64::from(i32::MIN),
+        -1,
+        0,
+        i64::from(i32::MAX),
+        i64::from(i32::MAX) + 1,
+    ] {
+        prop_time_range(ms);
+    }
+}
+
+/// The bolero harnesses of the time formats: random under `cargo test`, every value under
+/// Kani. No loops but the BCD digit loop (3 digits) and the base loop (4 bases) of
+/// `from_millis`: `#[kani::unwind(5)]`.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_word_decode() {
+    bolero::check!()
+        .with_type::<u16>()
+        .with_iterations(20_000)
+        .for_each(|&w| {
+            prop_word_decode(w);
+            prop_bcd3(w);
+        });
+}
+
+/// S5T-AUTO-BASE-01 and S5T-RANGE-01 for every duration (`from_millis` divides by the four
+/// constant bases only): `#[kani::unwind(5)]` for its loop over the 4 bases.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_from_millis() {
+    bolero::check!()
+        .with_type::<(u32, S5Time)>()
+        .with_iterations(20_000)
+        .for_each(|&(ms, t)| {
+            prop_from_millis(u64::from(ms));
+            prop_auto_encoding(t);
+        });
+}
+
+/// TIME-ARITH-01 and TIME-RANGE-01 for every pair (no loop).
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_time_arith() {
+    bolero::check!()
+        .with_type::<(i32, i32)>()
+        .with_iterations(20_000)
+        .for_each(|&(a, b)| prop_time_arith(a, b));
+}
+
+/// The literal alphabet: every byte the parsers treat specially, plus one of each other class.
+const LITERAL_BYTES: &[u8] = b"sStT5#wWcC16_09hHmMdD.,+- eAxI\xC3";
+
+/// S5T-LIT-02 (and the counter preset parser's totality, SC-BCD-01): no panic on any text of
+/// up to 16 bytes, an accepted S5TIME within range, an error position inside the text. The
+/// bytes are drawn from the literal alphabet (and, under Kani, are any bytes that form UTF-8).
+pub fn prop_parse_bytes(bytes: &[u8]) {
+    if let Ok(text) = core::str::from_utf8(bytes) {
+        prop_s5_parse_total(text);
+        if let Ok(pv) = plc_timers::counter::s5::CounterPreset::parse(text) {
+            assert!(pv.value() <= 999, "SC-BCD-01: {text}: a preset above 999");
+        }
+    }
+}
+
+/// The parsers over literals of 12 bytes, every byte any of [`LITERAL_BYTES`] under `cargo
+/// test` and any byte under Kani: `#[kani::unwind(14)]` covers the parsers' per-byte loops
+/// (at most 12 iterations each, nested loops advancing the same index) and their exits, and
+/// `from_utf8`'s loop over 12 bytes.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(14))]
+fn kani_parse_12_bytes() {
+    bolero::check!()
+        .with_type::<([u8; 12], u8)>()
+        .with_iterations(50_000)
+        .for_each(|(bytes, len)| {
+            let len = usize::from(*len) % 13;
+            #[cfg(not(kani))]
+            let bytes = bytes.map(|b| LITERAL_BYTES[usize::from(b) % LITERAL_BYTES.len()]);
+            prop_parse_bytes(&bytes[..len]);
+        });
+}
+
+/// S5T-LIT-01, S5T-LIT-02 by grammar: every literal `S5T#` + up to 8 tokens from a small
+/// alphabet that reaches every branch of the component lexer (digits, each unit in both cases,
+/// `_`, a fraction point, a sign, an unknown letter): literals of 4 to 12 bytes, and each
+/// accepted one is checked against the value of its components, computed here.
+#[test]
+fn exhaustive_s5_literal_grammar_12_bytes() {
+    const TOKENS: [&str; 10] = ["1", "9", "0", "H", "m", "S", "MS", "_", ".", "X"];
+    let mut n = 0u64;
+    let mut accepted = 0u64;
+    let mut stack = vec![String::from("S5T#")];
+    while let Some(text) = stack.pop() {
+        n += 1;
+        prop_s5_parse_total(&text);
+        if let Ok(t) = text.parse::<S5Time>() {
+            accepted += 1;
+            let total = components_total(&text[4..]).expect("accepted literals are well-formed");
+            assert_eq!(
+                Ok(t),
+                S5Time::from_millis(total),
+                "S5T-LIT-01: {text} is the automatic encoding of its components"
+            );
+        }
+        if text.len() < 12 {
+            for tok in TOKENS {
+                if text.len() + tok.len() <= 12 {
+                    stack.push(format!("{text}{tok}"));
+                }
+            }
+        }
+    }
+    assert!(
+        n > 1_000_000 && accepted > 1_000,
+        "{n} literals, {accepted} accepted"
+    );
+}
+
+/// The total of `1H9M` … written as components, if it is a well-formed component list (digits
+/// then a unit, units in decreasing order, `_` between components).
+fn components_total(s: &str) -> Option<u64> {
+    let units = [("H", 3_600_000u64), ("M", 60_000), ("S", 1_000), ("MS", 1)];
+    let mut rest = s;
+    let mut total = 0u64;
+    let mut last = None;
+    let mut first = true;
+    while !rest.is_empty() {
+        if !first {
+            rest = rest.strip_prefix('_').unwrap_or(rest);
+        }
+        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+        let value: u64 = rest[..digits].parse().ok()?;
+        rest = &rest[digits..];
+        let (i, (u, ms)) = units.iter().enumerate().rev().find(|(_, (u, _))| {
+            rest.len() >= u.len()
+                && rest[..u.len()].eq_ignore_ascii_case(u)
+                && !rest[u.len()..].starts_with(|c: char| c.is_ascii_alphabetic())
+        })?;
+        if last.is_some_and(|l| i <= l) {
+            return None;
+        }
+        if !first && value >= [24, 60, 60, 1_000][i] {
+            return None;
+        }
+        last = Some(i);
+        first = false;
+        total += value * ms;
+        rest = &rest[u.len()..];
+    }
+    (!first).then_some(total)
+}

@@ -224,6 +224,113 @@ fn matrix(catalogs: &[(String, String, Catalog)]) -> String {
     m
 }
 
+/// Whether a requirement is behavioural: every requirement of the four families except the
+/// pure equivalence ones (`*-EQUIV-*`), which keep their equivalence properties. The CLI
+/// family's assertions live in `cli/tests/`, which its engineer maintains.
+fn behavioural(family: &str, id: &str) -> bool {
+    ["s5", "iec", "counter", "time"].contains(&family) && !id.contains("-EQUIV-")
+}
+
+/// The text of every `.rs` file under `dir`.
+fn sources(dir: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let Ok(entries) = fs::read_dir(dir) else {
+        return out;
+    };
+    for e in entries.flatten() {
+        let path = e.path();
+        if path.is_dir() {
+            out.extend(sources(&path.to_string_lossy()));
+        } else if path.extension().is_some_and(|x| x == "rs") {
+            let text = fs::read_to_string(&path).unwrap_or_default();
+            out.push((path.to_string_lossy().into_owned(), text));
+        }
+    }
+    out
+}
+
+/// Whether `text` has an assertion whose message starts with `id`: a string literal beginning
+/// `"ID:` or `"ID ` inside an `assert!`, `assert_eq!`, `assert_ne!` or `prop_assert*!` call
+/// (the macro name within the 600 bytes before it, with no statement end in between).
+fn asserts_id(text: &str, id: &str) -> bool {
+    [format!("\"{id}:"), format!("\"{id} ")]
+        .iter()
+        .any(|needle| {
+            text.match_indices(needle.as_str()).any(|(at, _)| {
+                let from = text[..at]
+                    .char_indices()
+                    .rev()
+                    .nth(600)
+                    .map_or(0, |(i, _)| i);
+                let before = &text[from..at];
+                before
+                    .rfind("assert")
+                    .is_some_and(|m| !before[m..].contains(";\n"))
+            })
+        })
+}
+
+/// Every behavioural requirement has a property of its own in `proofs/`: an assertion whose
+/// message starts with its ID.
+fn missing_assertions(catalogs: &[(String, String, Catalog)]) -> Vec<String> {
+    let proofs = sources("proofs");
+    catalogs
+        .iter()
+        .flat_map(|(family, _, c)| c.requirement.iter().map(move |r| (family, r)))
+        .filter(|(family, r)| behavioural(family, &r.id))
+        .filter(|(_, r)| !proofs.iter().any(|(_, text)| asserts_id(text, &r.id)))
+        .map(|(family, r)| {
+            format!(
+                "{family}: {}: no assertion in proofs/ whose message starts with it",
+                r.id
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn every_behavioural_requirement_leads_an_assertion_in_proofs() {
+    let catalogs = load_all();
+    let missing = missing_assertions(&catalogs);
+    assert!(missing.is_empty(), "{}", missing.join("\n"));
+    let checked = catalogs
+        .iter()
+        .flat_map(|(f, _, c)| c.requirement.iter().map(move |r| (f, r)))
+        .filter(|(f, r)| behavioural(f, &r.id))
+        .count();
+    assert!(
+        checked >= 50,
+        "only {checked} behavioural requirements found"
+    );
+}
+
+/// The assertion check itself: a message inside an assertion counts, a comment or a plain
+/// string does not, nor does another ID that shares a prefix.
+#[test]
+fn assertion_check_rejects_look_alikes() {
+    assert!(asserts_id(
+        "assert!(x, \"S5TMR-R-01: R resets\");",
+        "S5TMR-R-01"
+    ));
+    assert!(asserts_id(
+        "assert_eq!(\n a,\n b,\n \"SC-Q-01 {name}\"\n);",
+        "SC-Q-01"
+    ));
+    assert!(!asserts_id("// \"S5TMR-R-01: R resets\"", "S5TMR-R-01"));
+    assert!(!asserts_id(
+        "assert!(x);\nlet m = \"S5TMR-R-01: no\";",
+        "S5TMR-R-01"
+    ));
+    assert!(!asserts_id(
+        "assert!(x, \"S5TMR-R-011: other\");",
+        "S5TMR-R-01"
+    ));
+    assert!(!asserts_id(
+        "cover!(x, \"S5TMR-R-01: a cover\");",
+        "S5TMR-R-01"
+    ));
+}
+
 #[test]
 fn catalog_is_complete_and_matrix_is_current() {
     let catalogs = load_all();
@@ -234,13 +341,12 @@ fn catalog_is_complete_and_matrix_is_current() {
         .flat_map(|(family, _, c)| c.requirement.iter().map(move |r| (family.as_str(), r)))
         .flat_map(|(family, r)| check(family, r, &mut ids))
         .collect();
-    assert!(errors.is_empty(), "catalog errors:\n{}", errors.join("\n"));
-
     let generated = matrix(&catalogs);
     let path = "spec/matrix.md";
     if std::env::var_os("UPDATE_SPEC").is_some() {
         fs::write(path, &generated).expect("write spec/matrix.md");
     }
+    assert!(errors.is_empty(), "catalog errors:\n{}", errors.join("\n"));
     let committed = fs::read_to_string(path).unwrap_or_default();
     assert!(
         committed == generated,

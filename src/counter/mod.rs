@@ -105,6 +105,7 @@ counter_int!(u64, "ULINT");
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub enum CounterKind {
     /// `CTU`: counts up on rising CU; R resets; Q = CV >= PV.
     Ctu,
@@ -155,6 +156,7 @@ impl CounterKind {
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub struct CounterInput<T> {
     /// `CU`, count up (rising edge).
     pub cu: bool,
@@ -218,6 +220,7 @@ pub struct CounterOutput<T> {
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub struct CounterState<T> {
     /// `CV`.
     pub cv: T,

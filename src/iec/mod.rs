@@ -51,6 +51,7 @@ pub use structure::{IecTimer, IecTimerOf};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub enum IecKind {
     /// `TP`, pulse: Q = 1 for PT after a rising IN; IN and PT changes while running have no effect.
     Tp,
@@ -86,6 +87,7 @@ impl IecKind {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub struct IecInput {
     /// `IN`.
     pub input: bool,
@@ -166,6 +168,28 @@ pub struct IecState<C> {
     pub et: C,
     /// `Q`.
     pub q: bool,
+}
+
+/// Any valid state ([`IecState::is_valid`]): ET at most PT, START 0 unless running (feature
+/// `bolero`).
+#[cfg(feature = "bolero")]
+impl<C: ClockWord + bolero_generator::TypeGenerator> bolero_generator::TypeGenerator
+    for IecState<C>
+{
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<IecState<C>> {
+        let running: bool = driver.produce()?;
+        let start: C = driver.produce()?;
+        let (a, b): (C, C) = (driver.produce()?, driver.produce()?);
+        Some(IecState {
+            kind: driver.produce()?,
+            input: driver.produce()?,
+            running,
+            start: if running { start } else { C::ZERO },
+            pt: a.max(b),
+            et: a.min(b),
+            q: driver.produce()?,
+        })
+    }
 }
 
 impl<C: ClockWord> IecState<C> {

@@ -52,6 +52,7 @@ use crate::time::{CpuTime, S5Time, TimeBase};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub enum S5Kind {
     /// `S_PULSE`, STL `SP` (German `SI`): pulse, Q = 1 while running and S = 1 (LAD manual §9.3).
     #[doc(alias = "SP")]
@@ -119,6 +120,7 @@ impl S5Kind {
 /// assert!(input.s && input.fr && !input.r);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub struct S5Input {
     /// `S`, the start input.
     pub s: bool,
@@ -204,6 +206,26 @@ pub struct S5State {
     pub s_prev: bool,
     /// `FR` at the previous execution: the edge memory of the enable.
     pub fr_prev: bool,
+}
+
+/// Any valid state ([`S5State::is_valid`]): value 0..=999, any base and flags, an expiry
+/// status only on a running timer (feature `bolero`).
+#[cfg(feature = "bolero")]
+impl bolero_generator::TypeGenerator for S5State {
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<S5State> {
+        use bolero_generator::ValueGenerator;
+        let running: bool = driver.produce()?;
+        let q_on_expiry: bool = driver.produce()?;
+        Some(S5State {
+            running,
+            value: (0u16..=999).generate(driver)?,
+            base: driver.produce()?,
+            q: driver.produce()?,
+            q_on_expiry: running && q_on_expiry,
+            s_prev: driver.produce()?,
+            fr_prev: driver.produce()?,
+        })
+    }
 }
 
 impl S5State {

@@ -26,6 +26,7 @@ use core::fmt::Debug;
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 #[repr(transparent)]
 pub struct CpuTime(u64);
 

@@ -21,6 +21,7 @@ use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 #[repr(u8)]
 pub enum TimeBase {
     /// 10 ms, bits 13-12 = `00`.
@@ -159,6 +160,19 @@ impl kani::Arbitrary for S5Time {
             units,
             base: kani::any(),
         }
+    }
+}
+
+/// Any valid S5TIME: units 0..=999 of any base (feature `bolero`).
+#[cfg(feature = "bolero")]
+impl bolero_generator::TypeGenerator for S5Time {
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<S5Time> {
+        use bolero_generator::ValueGenerator;
+        let units = (0u16..=999).generate(driver)?;
+        Some(S5Time {
+            units,
+            base: driver.produce()?,
+        })
     }
 }
 

@@ -49,6 +49,7 @@ use crate::time::bcd3_encode;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub enum S5CounterKind {
     /// `S_CU` (German `Z_VORW`): up counter (no CD input).
     #[doc(alias = "Z_VORW")]
@@ -98,6 +99,7 @@ pub const CV_MAX: u16 = 999;
 /// # Ok::<(), plc_timers::counter::s5::CounterPresetError>(())
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 pub struct S5CounterInput {
     /// `CU` (`ZV`), count up on a rising edge.
     pub cu: bool,
@@ -153,6 +155,30 @@ pub struct S5CounterState {
     pub s_prev: bool,
     /// Edge memory of FR.
     pub fr_prev: bool,
+}
+
+/// Any valid state: CV 0..=999, any edge memories (feature `bolero`).
+#[cfg(feature = "bolero")]
+impl bolero_generator::TypeGenerator for S5CounterState {
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<S5CounterState> {
+        use bolero_generator::ValueGenerator;
+        Some(S5CounterState {
+            cv: (0u16..=CV_MAX).generate(driver)?,
+            cu_prev: driver.produce()?,
+            cd_prev: driver.produce()?,
+            s_prev: driver.produce()?,
+            fr_prev: driver.produce()?,
+        })
+    }
+}
+
+/// Any preset 0..=999 (feature `bolero`).
+#[cfg(feature = "bolero")]
+impl bolero_generator::TypeGenerator for CounterPreset {
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<CounterPreset> {
+        use bolero_generator::ValueGenerator;
+        CounterPreset::new((0u16..=CV_MAX).generate(driver)?).ok()
+    }
 }
 
 impl S5CounterState {
