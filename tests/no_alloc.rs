@@ -1,21 +1,20 @@
 //! No step of any block allocates: a counting global allocator around steps of every block kind,
-//! reference and optimized, including the timer and counter memory areas and the counter bank.
+//! reference and optimized, and of every container: the S5 timer memory (box calls, the OS tick,
+//! `advance_to`, the STL operations), the TON bank, the counter bank and the S5 counter memory.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use plc_timers::counter::packed::{BankInputs, CounterBank, PackedCounter};
-use plc_timers::counter::reference::CounterRef;
 use plc_timers::counter::s5::{
-    CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterRef,
+    CounterMemory, CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps,
+    S5CounterRef,
 };
-use plc_timers::counter::{CounterInput, CounterKind, CounterOps};
-use plc_timers::iec::reference::Reference;
-use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
-use plc_timers::s5::memory::TimerMemory;
-use plc_timers::s5::reference::S5TimerRef;
-use plc_timers::s5::{S5Input, S5Kind};
-use plc_timers::time::{S5Time, Time, TimeBase};
+use plc_timers::counter::{
+    BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps, CounterRef,
+};
+use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef, TonBank};
+use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef, TimerMemory};
+use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 
 struct Counting;
 
@@ -38,84 +37,159 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
+/// Everything the test steps, made before the counting starts.
+struct Blocks {
+    s5_refs: [S5TimerRef; 5],
+    s5: [S5Timer; 5],
+    area: TimerMemory<8>,
+    iec_refs: [IecTimerRef<u32>; 4],
+    iec: [IecTimer; 4],
+    ton_bank: TonBank<3>,
+    ctr_refs: [CounterRef<i64>; 3],
+    ctrs: [Counter<u64>; 3],
+    ctr_bank: CounterBank<i32, 3>,
+    s5c_refs: [S5CounterRef; 3],
+    s5c: [S5Counter; 3],
+    s5c_area: CounterMemory<4>,
+}
+
+/// One step of everything at step `i`; the results are summed so that none is optimized away.
+fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> u64 {
+    let mut sum = 0u64;
+    let now = CpuTime::from_millis(i * 7);
+    let s = i % 7 < 4;
+    let input = S5Input {
+        s,
+        r: i % 31 == 0,
+        fr: i % 13 == 0,
+        tv,
+    };
+    for (k, kind) in S5Kind::ALL.into_iter().enumerate() {
+        sum += u64::from(b.s5_refs[k].call(kind, now, input).bi);
+        sum += u64::from(b.s5[k].call(kind, now, input).bcd);
+        sum += u64::from(b.area.call(k, kind, now, input).map_or(0, |o| o.bi));
+    }
+    b.area.tick(TimeBase::Ms10, 1);
+    b.area.tick(TimeBase::Ms100, 3);
+    b.area.advance_to(CpuTime::from_millis(i * 7 + 3));
+    b.area.fr(5, s).expect("T 5 exists");
+    b.area.start(6, S5Kind::SPext, s, tv).expect("T 6 exists");
+    b.area.reset(7, i % 11 == 0).expect("T 7 exists");
+    let loads = (b.area.load(0), b.area.load_bcd(1), b.area.status(2));
+    sum += u64::from(loads.0.unwrap_or(0)) + u64::from(loads.2.unwrap_or(false));
+    sum += b.area.outputs().map(|o| u64::from(o.bi)).sum::<u64>();
+
+    let ii = IecInput {
+        input: s,
+        pt,
+        reset: i % 17 == 0,
+    };
+    for (k, kind) in IecKind::ALL.into_iter().enumerate() {
+        sum += u64::from(b.iec_refs[k].call(kind, now, ii).et);
+        sum += u64::from(b.iec[k].call(kind, now, ii).et);
+        sum += u64::from(b.iec_refs[k].read_q(now)) + u64::from(b.iec[k].read_et(now));
+        if i % 19 == 0 {
+            b.iec_refs[k].reset_timer();
+            b.iec[k].reset_timer();
+            b.iec_refs[k].preset_timer(pt);
+            b.iec[k].preset_timer(pt);
+        }
+        if i % 97 == 0 {
+            b.iec_refs[k].run_stop_run(k % 2 == 0);
+            b.iec[k].run_stop_run(k % 2 == 0);
+        }
+    }
+    b.ton_bank.scan(now, &[s, !s, i % 3 == 0], &[pt; 3]);
+    sum += b.ton_bank.outputs().map(|o| u64::from(o.et)).sum::<u64>();
+    if let Some(state) = b.ton_bank.get(1) {
+        b.ton_bank.set(2, state);
+    }
+
+    let ci = CounterInput {
+        cu: s,
+        cd: i % 3 == 0,
+        r: i % 29 == 0,
+        ld: i % 37 == 0,
+        pv: 5,
+    };
+    for (k, kind) in CounterKind::ALL.into_iter().enumerate() {
+        sum += b.ctr_refs[k].call(kind, ci).cv.unsigned_abs();
+        let unsigned = CounterInput {
+            cu: ci.cu,
+            cd: ci.cd,
+            r: ci.r,
+            ld: ci.ld,
+            pv: 5u64,
+        };
+        sum += b.ctrs[k].call(kind, unsigned).cv;
+    }
+    let (cu, cd) = ([s, !s, i % 5 == 0], [i % 3 == 0; 3]);
+    let none = [false; 3];
+    b.ctr_bank.scan(
+        &BankInputs {
+            cu: &cu,
+            cd: &cd,
+            r: &[i % 29 == 0; 3],
+            ld: &none,
+        },
+        7,
+    );
+    sum += b
+        .ctr_bank
+        .outputs(7)
+        .map(|o| o.cv.unsigned_abs() as u64)
+        .sum::<u64>();
+    if let Some(state) = b.ctr_bank.get(0) {
+        b.ctr_bank.set(1, state);
+    }
+
+    let sci = S5CounterInput {
+        cu: s,
+        cd: i % 3 == 0,
+        s: i % 50 == 0,
+        r: i % 71 == 0,
+        fr: i % 23 == 0,
+        pv,
+    };
+    for (k, kind) in S5CounterKind::ALL.into_iter().enumerate() {
+        sum += u64::from(b.s5c_refs[k].call(kind, sci).cv);
+        sum += u64::from(b.s5c[k].call(kind, sci).cv_bcd);
+        sum += u64::from(b.s5c_area.call(k, kind, sci).map_or(0, |o| o.cv));
+    }
+    b.s5c_area.fr(3, s).expect("C 3 exists");
+    b.s5c_area.cu(3, s).expect("C 3 exists");
+    b.s5c_area.cd(3, i % 3 == 0).expect("C 3 exists");
+    b.s5c_area.set(3, i % 40 == 0, pv).expect("C 3 exists");
+    b.s5c_area.reset(3, i % 90 == 0).expect("C 3 exists");
+    sum += u64::from(b.s5c_area.load(3).unwrap_or(0) + b.s5c_area.load_bcd(3).unwrap_or(0));
+    sum += u64::from(b.s5c_area.status(3).unwrap_or(false));
+    sum
+}
+
 #[test]
 fn no_step_allocates() {
     let tv = S5Time::from_word(0x0005).expect("valid");
     let pt = Time::from_millis(30);
     let pv = CounterPreset::new(3).expect("valid");
-    let mut s5_refs = S5Kind::ALL.map(S5TimerRef::new);
-    let mut area = TimerMemory::<8>::new();
-    let mut iec_ref = Reference::<u32>::new();
-    let mut iec = IecTimer::new();
-    let mut ctr_ref = CounterRef::<i64>::new(CounterKind::Ctud);
-    let mut ctr = PackedCounter::<u64>::new();
-    let mut bank = CounterBank::<i32, 2>::new();
-    let mut s5c_ref = S5CounterRef::new(S5CounterKind::SCud);
-    let mut s5c = CounterMemory::<4>::new();
+    let mut blocks = Blocks {
+        s5_refs: [S5TimerRef::new(); 5],
+        s5: [S5Timer::new(); 5],
+        area: TimerMemory::new(),
+        iec_refs: [IecTimerRef::new(); 4],
+        iec: [IecTimer::new(); 4],
+        ton_bank: TonBank::new(),
+        ctr_refs: [CounterRef::new(); 3],
+        ctrs: [Counter::new(); 3],
+        ctr_bank: CounterBank::new(),
+        s5c_refs: [S5CounterRef::new(); 3],
+        s5c: [S5Counter::new(); 3],
+        s5c_area: CounterMemory::new(),
+    };
 
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    for i in 0..1_000u64 {
-        let s = i % 7 < 4;
-        let input = S5Input {
-            s,
-            r: i % 31 == 0,
-            fr: i % 13 == 0,
-            tv,
-        };
-        for (k, t) in s5_refs.iter_mut().enumerate() {
-            t.call(i * 10, input);
-            let _ = area.call(k, S5Kind::ALL[k], i * 10, input);
-        }
-        area.tick(TimeBase::Ms10, 1);
-        let _ = (area.load(0), area.load_bcd(1), area.status(2));
-        for kind in IecKind::ALL {
-            let ii = IecInput {
-                input: s,
-                pt,
-                reset: i % 17 == 0,
-            };
-            iec_ref.call(kind, i as u32 * 10, ii);
-            iec.call(kind, i as u32 * 10, ii);
-        }
-        iec.read_q(i as u32);
-        iec.reset_timer();
-        let ci = CounterInput {
-            cu: s,
-            cd: i % 3 == 0,
-            r: i % 29 == 0,
-            ld: i % 37 == 0,
-            pv: 5,
-        };
-        ctr_ref.call(ci);
-        ctr.call(
-            CounterKind::Ctud,
-            CounterInput {
-                cu: s,
-                cd: i % 3 == 0,
-                r: false,
-                ld: false,
-                pv: 5,
-            },
-        );
-        let w = [i.wrapping_mul(0x9E37_79B9_7F4A_7C15); 2];
-        bank.scan(
-            BankInputs {
-                cu: &w,
-                cd: &[!w[0]; 2],
-                r: &[0; 2],
-                ld: &[0; 2],
-            },
-            7,
-        );
-        let sci = S5CounterInput {
-            cu: s,
-            cd: i % 3 == 0,
-            s: i % 50 == 0,
-            r: i % 71 == 0,
-            pv,
-        };
-        s5c_ref.call(sci);
-        let _ = s5c.call(1, S5CounterKind::SCud, sci);
+    let mut sum = 0u64;
+    for i in 0..2_000u64 {
+        sum = sum.wrapping_add(step_all(&mut blocks, i, tv, pt, pv));
     }
     let after = ALLOCATIONS.load(Ordering::SeqCst);
     assert_eq!(
@@ -124,4 +198,5 @@ fn no_step_allocates() {
         "steps allocated {} times",
         after - before
     );
+    assert_ne!(sum, 0, "the steps ran");
 }

@@ -76,7 +76,7 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
             return false;
         }
         self.cv[i] = state.cv;
-        self.edges[i] = u8::from(state.cu_prev) * CU_PREV | u8::from(state.cd_prev) * CD_PREV;
+        self.edges[i] = (u8::from(state.cu_prev) * CU_PREV) | (u8::from(state.cd_prev) * CD_PREV);
         true
     }
 
@@ -91,21 +91,46 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
     }
 
     /// One scan: every counter called once as CTUD with preset `pv`.
+    ///
+    /// One pass over the arrays with the same straight-line code for every counter: both
+    /// saturating steps are computed and the inputs select, without a branch, so that LLVM
+    /// vectorizes the loop (8 INT counters per 128-bit instruction) and random edges cost no
+    /// misprediction.
+    ///
+    /// Why it equals the reference's CTUD ([`super::CounterRef`]): `up` and `down` are its
+    /// edges (the input 1, its memory 0); both memories take the inputs on every call, also
+    /// under R and LD (CNT-EDGE-01). Up alone counts up, down alone counts down, both or
+    /// neither leave CV (CNT-SIMUL-01), with the reference's saturating steps (CNT-SAT-01);
+    /// LD replaces the count and R replaces both (CNT-PRIO-01).
     pub fn scan(&mut self, inputs: &BankInputs<'_, N>, pv: T) {
-        for i in 0..N {
-            let now = u8::from(inputs.cu[i]) * CU_PREV | u8::from(inputs.cd[i]) * CD_PREV;
-            let rising = now & !self.edges[i];
-            self.edges[i] = now;
-            self.cv[i] = if inputs.r[i] {
+        let lanes = self.cv.iter_mut().zip(self.edges.iter_mut()).zip(
+            inputs
+                .cu
+                .iter()
+                .zip(inputs.cd.iter())
+                .zip(inputs.r.iter().zip(inputs.ld.iter())),
+        );
+        for ((cv, edges), ((&cu, &cd), (&r, &ld))) in lanes {
+            let e = *edges;
+            let up = cu & (e & CU_PREV == 0);
+            let down = cd & (e & CD_PREV == 0);
+            *edges = (u8::from(cu) * CU_PREV) | (u8::from(cd) * CD_PREV);
+            let v = *cv;
+            let inc = v.saturating_inc();
+            let dec = v.saturating_dec();
+            let counted = if up & !down {
+                inc
+            } else if down & !up {
+                dec
+            } else {
+                v
+            };
+            *cv = if r {
                 T::ZERO
-            } else if inputs.ld[i] {
+            } else if ld {
                 pv
             } else {
-                match rising {
-                    CU_PREV => self.cv[i].saturating_inc(),
-                    CD_PREV => self.cv[i].saturating_dec(),
-                    _ => self.cv[i],
-                }
+                counted
             };
         }
     }

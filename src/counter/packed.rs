@@ -1,9 +1,7 @@
 //! The optimized IEC counter: [`Counter`], CV and the two edge memories in one small struct with
 //! a branch-free step.
 
-use super::{
-    outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
-};
+use super::{CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState};
 
 const CU_PREV: u8 = 1;
 const CD_PREV: u8 = 2;
@@ -54,25 +52,46 @@ impl<T: CounterInt> Counter<T> {
 }
 
 impl<T: CounterInt> CounterOps<T> for Counter<T> {
+    /// The reference's rules (edges, then R before LD before counting) as a few selects with
+    /// no branch on the data, so that an input stream with random edges costs no branch
+    /// misprediction.
+    ///
+    /// Why it equals [`super::CounterRef`]: the inputs a kind lacks are taken as 0, as the
+    /// reference's `kind.mask` does (CNT-INPUTS-01); read field by field, which LLVM keeps in
+    /// single registers. `up` and `down` are the reference's edges: the input is 1 and its
+    /// memory, a bit of `edges`, is 0; both memories then take the inputs, on every call, also
+    /// under R and LD (CNT-EDGE-01). Up alone counts up, down alone counts down, both or
+    /// neither leave CV (CNT-SIMUL-01), with the reference's saturating steps (CNT-SAT-01).
+    /// Then LD replaces the count and R replaces both (CNT-PRIO-01).
     #[inline]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
-        let i = kind.mask(input.signals());
-        let now = edge_bits(i.cu, i.cd);
-        let rising = now & !self.edges;
-        self.edges = now;
-        self.cv = if i.r {
+        let (cu, cd, r, ld) = match kind {
+            CounterKind::Ctu => (input.cu, false, input.r, false),
+            CounterKind::Ctd => (false, input.cd, false, input.ld),
+            CounterKind::Ctud => (input.cu, input.cd, input.r, input.ld),
+        };
+        let up = cu & (self.edges & CU_PREV == 0);
+        let down = cd & (self.edges & CD_PREV == 0);
+        self.edges = edge_bits(cu, cd);
+        let cv = self.cv;
+        let counted = match (up, down) {
+            (true, false) => cv.saturating_inc(),
+            (false, true) => cv.saturating_dec(),
+            _ => cv,
+        };
+        let cv = if r {
             T::ZERO
-        } else if i.ld {
+        } else if ld {
             input.pv
         } else {
-            // Up only, down only, or neither (both rising cancel out).
-            match rising {
-                CU_PREV => self.cv.saturating_inc(),
-                CD_PREV => self.cv.saturating_dec(),
-                _ => self.cv,
-            }
+            counted
         };
-        outputs(self.cv, input.pv)
+        self.cv = cv;
+        CounterOutput {
+            qu: cv >= input.pv,
+            qd: cv <= T::ZERO,
+            cv,
+        }
     }
 
     /// The abstraction function.

@@ -202,15 +202,6 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 
     #[inline]
-    fn start(&mut self, now: C, pt: Time) {
-        self.start = now;
-        self.pt = C::from_preset(pt.clamp_negative());
-        self.et = C::default();
-        // Q is left to the `update` that follows every start: it sets Q from the kind and ET.
-        self.flags |= flag::RUNNING;
-    }
-
-    #[inline]
     fn stop_clear(&mut self) {
         self.start = C::default();
         self.et = C::default();
@@ -218,85 +209,189 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 }
 
+/// `a` if `c`, else `b`, by arithmetic on the bits (`b ^ ((a ^ b) & mask)`) rather than by
+/// `if`, which LLVM may turn into a branch.
+#[inline(always)]
+fn blend<C: ClockWord>(c: bool, a: C, b: C) -> C {
+    let (a, b) = (a.to_u64(), b.to_u64());
+    C::from_u64_wrapping(b ^ ((a ^ b) & u64::from(c).wrapping_neg()))
+}
+
+impl<C: ClockWord> IecTimerOf<C> {
+    /// The reference's `start` followed by its `update` at the same instant, in closed form:
+    /// START = now, the preset latched (negative as 0), ET = 0; the update then finds
+    /// `elapsed = 0`, which reaches PT exactly when PT = 0: then the timer has expired at once
+    /// (ET = PT = 0, Q = `q_expired`, stopped, START = 0), else it runs (Q = `q_running`).
+    /// `flags` holds the kind and IN bits of the call. The choice is made by selects (the
+    /// preset of a program rarely changes, but the cost of a misprediction is not worth a
+    /// branch here).
+    #[inline(always)]
+    fn begin(
+        &mut self,
+        now: C,
+        pt: Time,
+        flags: u8,
+        q_running: bool,
+        q_expired: bool,
+    ) -> IecOutput<C> {
+        let pt = C::from_preset(pt.clamp_negative());
+        let runs = pt != C::ZERO;
+        let q = if runs { q_running } else { q_expired };
+        self.start = if runs { now } else { C::ZERO };
+        self.pt = pt;
+        self.et = C::ZERO;
+        self.flags = flags | if runs { flag::RUNNING } else { 0 } | if q { flag::Q } else { 0 };
+        IecOutput { q, et: C::ZERO }
+    }
+
+    /// The reference's `update` of a running timer (IEC-UPDATE-01): `elapsed = now - START`
+    /// (modulo 2^BITS); at `elapsed >= PT` it has expired: ET = PT, Q = `q_expired`, stopped,
+    /// START = 0; before, ET = elapsed and Q = `q_running`, still running. With `pause`, the
+    /// timer then stops in either case (TONR with IN = 0: the reference's pause after the
+    /// update), keeping ET and Q.
+    #[inline(always)]
+    fn advance(
+        &mut self,
+        now: C,
+        flags: u8,
+        q_running: bool,
+        q_expired: bool,
+        pause: bool,
+    ) -> IecOutput<C> {
+        let elapsed = now.elapsed_since(self.start);
+        let reached = elapsed >= self.pt;
+        let q = if reached { q_expired } else { q_running };
+        let et = if reached { self.pt } else { elapsed };
+        let runs = !reached & !pause;
+        self.start = if runs { self.start } else { C::ZERO };
+        self.et = et;
+        self.flags = flags | if runs { flag::RUNNING } else { 0 } | if q { flag::Q } else { 0 };
+        IecOutput { q, et }
+    }
+
+    /// Nothing but the call's kind and IN recorded: a stopped timer whose call changes no
+    /// member (Q, ET, START = 0 and PT as they are).
+    #[inline(always)]
+    fn idle(&mut self, flags: u8) -> IecOutput<C> {
+        let q = self.flags & flag::Q;
+        self.flags = flags | q;
+        IecOutput {
+            q: q != 0,
+            et: self.et,
+        }
+    }
+
+    /// The reference's `reset_and_stop` with Q = `q`: stopped, START = ET = 0; PT kept.
+    #[inline(always)]
+    fn clear(&mut self, flags: u8, q: bool) -> IecOutput<C> {
+        self.start = C::ZERO;
+        self.et = C::ZERO;
+        self.flags = flags | if q { flag::Q } else { 0 };
+        IecOutput { q, et: C::ZERO }
+    }
+}
+
 impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
+    /// One box call: the reference's decisions, taken on the inputs and on the timer's state
+    /// (the reference's functions are named below), and per path only the members that path
+    /// changes are written. Where the outcome depends on the time (expiry), selects instead of
+    /// branches. `kind` is a constant at every call site of a program, and the `match` on it
+    /// disappears when the call is inlined. (An earlier version first tested for a quiet
+    /// stopped timer and returned; that test cost more than it saved, and is gone: the quiet
+    /// cases are now the [`IecTimerOf::idle`] paths, which write one byte.)
+    ///
+    /// Why each kind equals the reference ([`super::IecTimerRef`]): [`IecTimerOf::begin`] is
+    /// its `start` + `update` at one instant, [`IecTimerOf::advance`] its `update` of a running
+    /// timer, [`IecTimerOf::clear`] its `reset_and_stop`; a stopped timer's `update` changes
+    /// nothing, which is [`IecTimerOf::idle`]. Every path records the kind and IN, as the
+    /// reference does after every call. A stopped timer has START = 0 already
+    /// ([`IecState::is_valid`], which every structure satisfies).
     #[inline]
     fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
         let now = now.clock::<C>();
-        let k = code(kind);
-        // Fast path: a stopped timer of the same kind whose IN did not change has nothing to do
-        // when the call would leave every member as it is (checked by the equivalence proofs).
-        let in_bit = if input.input { flag::IN } else { 0 };
-        let same = flag::KIND_VALID | (k as u8) << flag::KIND_SHIFT | in_bit;
-        if self.flags & !flag::Q == same {
-            let zero = self.et == C::default();
-            let q = self.flags & flag::Q != 0;
-            let quiet = match kind {
-                IecKind::Tp => input.input || zero,
-                IecKind::Ton => input.input || (zero && !q),
-                IecKind::Tof => !input.input || (zero && q),
-                // TONR resumes on a level.
-                IecKind::Tonr => false,
-            };
-            if quiet {
-                return IecOutput { q, et: self.et };
-            }
-        }
-        let was_in = self.flags & flag::IN != 0;
-        let running = self.flags & flag::RUNNING != 0;
+        let f = self.flags;
+        let was_in = f & flag::IN != 0;
+        let running = f & flag::RUNNING != 0;
+        let on = input.input;
+        let kind_bits = flag::KIND_VALID | (code(kind) as u8) << flag::KIND_SHIFT;
+        let flags = kind_bits | if on { flag::IN } else { 0 };
         match kind {
+            // TP: update; a rising IN with no pulse running starts one; stopped with IN = 0,
+            // ET returns to 0. A pulse still running after the update ignores IN.
             IecKind::Tp => {
-                self.update(now, k);
-                if input.input && !was_in && self.flags & flag::RUNNING == 0 {
-                    self.start(now, input.pt);
-                    self.update(now, k);
+                let (q, et) = if running {
+                    let elapsed = now.elapsed_since(self.start);
+                    if elapsed < self.pt {
+                        self.et = elapsed;
+                        self.flags = flags | flag::RUNNING | flag::Q;
+                        return IecOutput {
+                            q: true,
+                            et: elapsed,
+                        };
+                    }
+                    // Expired on this update: ET = PT, Q = 0, stopped.
+                    self.start = C::ZERO;
+                    (false, self.pt)
+                } else {
+                    (f & flag::Q != 0, self.et)
+                };
+                if on & !was_in {
+                    return self.begin(now, input.pt, flags, true, false);
                 }
-                if self.flags & flag::RUNNING == 0 && !input.input {
-                    self.et = C::default();
-                }
+                let et = if on { et } else { C::ZERO };
+                self.et = et;
+                self.flags = flags | if q { flag::Q } else { 0 };
+                IecOutput { q, et }
             }
+            // TON: IN = 0 resets; a rising IN starts; else update.
             IecKind::Ton => {
-                if !input.input {
-                    self.stop_clear();
-                } else {
-                    if !was_in {
-                        self.start(now, input.pt);
-                    }
-                    self.update(now, k);
+                let rise = on & !was_in;
+                let start = blend(rise, now, self.start);
+                let pt = blend(rise, C::from_preset(input.pt.clamp_negative()), self.pt);
+                let run = running | rise;
+                let elapsed = now.elapsed_since(start);
+                let reached = elapsed >= pt;
+                let et = blend(run, blend(reached, pt, elapsed), self.et);
+                let q = (run & reached) | (!run & (f & flag::Q != 0));
+                let goes_on = run & !reached;
+                self.start = blend(on & goes_on, start, C::ZERO);
+                self.pt = pt;
+                self.et = blend(on, et, C::ZERO);
+                self.flags = flags | u8::from(on & q) << 1 | u8::from(on & goes_on) << 2;
+                IecOutput {
+                    q: on & q,
+                    et: self.et,
                 }
             }
+            // TOF: IN = 1 resets with Q = 1; a falling IN starts; else update.
             IecKind::Tof => {
-                if input.input {
-                    self.stop_clear();
-                    self.flags |= flag::Q;
+                if on {
+                    self.clear(flags, true)
+                } else if was_in {
+                    self.begin(now, input.pt, flags, true, false)
+                } else if running {
+                    self.advance(now, flags, true, false, false)
                 } else {
-                    if was_in {
-                        self.start(now, input.pt);
-                    }
-                    self.update(now, k);
+                    self.idle(flags)
                 }
             }
+            // TONR: R resets (PT kept); IN = 1 on a stopped timer that has not expired resumes
+            // with START shifted back by the accumulated ET, so that the update's `now - START`
+            // is the accumulated total (the reference's own arithmetic, modulo 2^BITS), and PT
+            // latched; a running timer updates; with IN = 0 it pauses after the update.
             IecKind::Tonr => {
                 if input.reset {
-                    self.stop_clear();
-                } else if input.input {
-                    if !running && self.flags & flag::Q == 0 {
-                        let accumulated = self.et;
-                        self.start(now, input.pt);
-                        self.start = now.elapsed_since(accumulated);
-                    }
-                    self.update(now, k);
+                    self.clear(flags, false)
                 } else if running {
-                    self.update(now, k);
-                    // Pause (a no-op if the update found the time elapsed: already stopped).
-                    self.flags &= !flag::RUNNING;
-                    self.start = C::default();
+                    self.advance(now, flags, false, true, !on)
+                } else if on & (f & flag::Q == 0) {
+                    self.start = now.elapsed_since(self.et);
+                    self.pt = C::from_preset(input.pt.clamp_negative());
+                    self.advance(now, flags, false, true, false)
+                } else {
+                    self.idle(flags)
                 }
             }
-        }
-        self.flags = (self.flags & (flag::Q | flag::RUNNING)) | same;
-        IecOutput {
-            q: self.flags & flag::Q != 0,
-            et: self.et,
         }
     }
 

@@ -4,7 +4,7 @@
 //! The operating system's tick of each base updates every running timer of that base in one
 //! pass over the area ([`TimerMemory::tick`]); the STL operations act on one timer.
 
-use super::word::{TimerWord, BASE, RUNNING};
+use super::word::{ticks_between_fast, TimerWord};
 use super::{S5Input, S5Kind, S5Output, S5State};
 use crate::operand::{self, NoSuchOperand, Operand};
 use crate::time::{CpuTime, S5Time, TimeBase};
@@ -113,42 +113,39 @@ impl<const N: usize> TimerMemory<N> {
     }
 
     /// `n` ticks of `base` for the whole area: every running timer of that base loses
-    /// `min(n, value)` units (S5TMR-TICK-01). One branch-free pass over the words.
+    /// `min(n, value)` units (S5TMR-TICK-01). One branch-free pass over the words, which LLVM
+    /// vectorizes.
     pub fn tick(&mut self, base: TimeBase, n: u64) {
+        let bits = u32::from(base.bits());
         if n == 1 {
-            let bits = u32::from(base.bits());
+            // The OS tick as it comes: one unit, the commonest case, with the least work.
             for w in self.words.iter_mut() {
                 *w = w.tick_once(bits);
             }
             return;
         }
-        let b = u32::from(base.bits()) << 12;
+        // A value is at most 999 units, so any count from 1 000 on acts as 1 000: the count
+        // fits the 32-bit lanes of the words ([`TimerWord::tick_units`]).
+        let n = n.min(1_000) as u32;
         for w in self.words.iter_mut() {
-            // Words of another base are ticked with 0, which leaves them unchanged; selecting
-            // with arithmetic instead of a branch keeps the loop vectorizable.
-            let mine = (w.bits() & BASE == b) as u64;
-            *w = w.tick(n * mine);
+            *w = w.tick_units(bits, n);
         }
     }
 
     /// Advances the area's clock to `now`, applying the ticks of every base in
     /// `(self.now(), now]`. A time before the current one applies no ticks.
+    ///
+    /// The tick counts are computed without a division instruction (`ticks_between_fast`,
+    /// exact for every time), and a base is processed only when it has ticked: one pass over
+    /// the area for the 10 ms base, a second one on every tenth 10 ms, and so on.
     pub fn advance_to(&mut self, now: CpuTime) {
         if now <= self.now {
             return;
         }
-        // Only the bases of running timers need their ticks counted (each count is two
-        // divisions); one pass collects them.
-        let mut present = 0u8;
-        for w in self.words.iter() {
-            present |= u8::from(w.bits() & RUNNING != 0) << (w.bits() >> 12 & 3);
-        }
         for base in TimeBase::ALL {
-            if present & 1 << base.bits() != 0 {
-                let n = super::ticks_between(self.now, now, base);
-                if n > 0 {
-                    self.tick(base, n);
-                }
+            let n = ticks_between_fast(self.now, now, usize::from(base.bits()));
+            if n > 0 {
+                self.tick(base, n);
             }
         }
         self.now = now;

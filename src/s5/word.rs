@@ -13,7 +13,7 @@
 //! memories of S and FR. One word per timer, so a timer memory area is a `[u32; N]` that the
 //! OS tick processes as a vector, without knowing the timers' kinds.
 
-use super::{ticks_between, S5Input, S5Kind, S5Output, S5State, S5TimerOps};
+use super::{S5Input, S5Kind, S5Output, S5State, S5TimerOps};
 use crate::time::{CpuTime, S5Time, TimeBase, BCD3_TABLE};
 
 /// Bits 9-0: the remaining value in binary.
@@ -47,6 +47,46 @@ const _: () = {
     }
     assert!(union == USED);
 };
+
+/// Division of a CPU time by a time base (10^k ms, k = 1..=4, base code k - 1) without a
+/// division instruction: `(t >> k) * M >> (64 - k + L)`, with `L = ceil(log2(5^k))` and
+/// `M = ceil(2^(64 - k + L) / 5^k)`.
+///
+/// Why it is exact for every `u64`: `t / 10^k = (t / 2^k) / 5^k` (floors of floors), and
+/// `x = t >> k` is below `2^N` with `N = 64 - k`. For a divisor `d = 5^k` with
+/// `2^(L-1) < d <= 2^L`, `M = ceil(2^(N+L) / d)` satisfies `2^(N+L) <= M d <= 2^(N+L) + d - 1
+/// < 2^(N+L) + 2^L`, and then `floor(x M / 2^(N+L)) = floor(x / d)` for every `0 <= x < 2^N`
+/// (Granlund and Montgomery 1994, theorem 4.2). `M` fits 64 bits for k = 1..=4 (checked
+/// below), and `x M` fits the 128-bit product.
+const BASE_DIVISORS: [(u32, u64, u32); 4] = {
+    let mut table = [(0u32, 0u64, 0u32); 4];
+    let mut k = 1u32;
+    while k <= 4 {
+        let d = 5u128.pow(k);
+        let l = 128 - (d - 1).leading_zeros(); // ceil(log2(d)) for d > 1
+        let shift = 64 - k + l;
+        let m = (1u128 << shift).div_ceil(d);
+        assert!(m < 1 << 64, "the multiplier fits 64 bits");
+        assert!(10u128.pow(k) == 5u128.pow(k) << k);
+        table[k as usize - 1] = (k, m as u64, shift);
+        k += 1;
+    }
+    table
+};
+
+/// `t / base.millis()`, by multiplication ([`BASE_DIVISORS`]).
+#[inline(always)]
+const fn div_by_base(t: u64, base_bits: usize) -> u64 {
+    let (k, m, shift) = BASE_DIVISORS[base_bits & 3];
+    (((t >> k) as u128 * m as u128) >> shift) as u64
+}
+
+/// [`super::ticks_between`] (the ticks of `base` in `(from, to]`: `to / b - from / b`, 0 when
+/// `to` is not after `from`), with the two divisions done by multiplication.
+#[inline(always)]
+pub(crate) const fn ticks_between_fast(from: CpuTime, to: CpuTime, base_bits: usize) -> u64 {
+    div_by_base(to.as_millis(), base_bits).saturating_sub(div_by_base(from.as_millis(), base_bits))
+}
 
 /// One timer, packed in a word. Its field is private: every word this type holds is a valid
 /// state (value at most 999, no stray bits, no expiry status on a stopped timer), which
@@ -181,6 +221,24 @@ impl TimerWord {
         TimerWord(Self::expire_where((w & !VALUE) | left, expired))
     }
 
+    /// `n` ticks (`n <= 1 000`) of base code `base_bits` (0..=3): [`TimerWord::tick`] for a
+    /// word of that base, the word as it is for another base. 32-bit arithmetic without
+    /// branches, so that a pass over an area vectorizes. Why it equals `tick`: a value is at
+    /// most 999, so `min(n, value)` is the same for the u64 count and for any count from
+    /// 1 000 on, which the caller clamps to; a word of another base is ticked with 0, which
+    /// `tick` leaves unchanged.
+    #[inline]
+    #[must_use]
+    pub const fn tick_units(self, base_bits: u32, n: u32) -> TimerWord {
+        let w = self.0;
+        let mine = (w & (RUNNING | BASE)) == (RUNNING | base_bits << 12);
+        let value = w & VALUE;
+        let dec = if n < value { n } else { value } & bit(mine, VALUE);
+        let left = value - dec;
+        let expired = bit(dec != 0 && left == 0, u32::MAX);
+        TimerWord(Self::expire_where((w & !VALUE) | left, expired))
+    }
+
     /// One tick of base code `base_bits` (0..=3): the OS tick as it comes, every base interval.
     /// Pure 32-bit arithmetic without branches, so that a pass over an area vectorizes:
     /// subtracting 1 from a non-zero value field cannot borrow into the other fields.
@@ -307,12 +365,14 @@ impl S5Timer {
 }
 
 impl S5TimerOps for S5Timer {
+    /// The ticks since the previous call are counted without a division instruction
+    /// ([`ticks_between_fast`]) and applied without a branch: [`TimerWord::tick`] leaves a
+    /// stopped timer as it is, which is what the reference's tick does with it.
     #[inline]
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
-        if self.word.is_running() {
-            let n = ticks_between(self.last_call, now, self.word.base());
-            self.word = self.word.tick(n);
-        }
+        let base = ((self.word.0 & BASE) >> 12) as usize;
+        let n = ticks_between_fast(self.last_call, now, base);
+        self.word = self.word.tick(n);
         self.last_call = now;
         self.word = self.word.execute(kind, input);
         self.word.output()
@@ -320,5 +380,32 @@ impl S5TimerOps for S5Timer {
 
     fn state(&self) -> S5State {
         self.word.state()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{div_by_base, BASE_DIVISORS};
+
+    /// The multiplication equals the division for every base: all times below 2^22, every
+    /// time within 2^16 of the top of the range, and a spread of times in between (the
+    /// theorem behind it covers all of them; this checks the table's constants).
+    #[test]
+    fn division_by_multiplication_is_exact() {
+        for (bits, &(k, _, _)) in BASE_DIVISORS.iter().enumerate() {
+            let b = 10u64.pow(k);
+            let check = |t: u64| assert_eq!(div_by_base(t, bits), t / b, "{t} / {b}");
+            (0..1u64 << 22).for_each(check);
+            (0..1u64 << 16).for_each(|d| check(u64::MAX - d));
+            let mut x = 0x9E37_79B9_7F4A_7C15u64;
+            for _ in 0..1 << 20 {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                check(x);
+                check(x / b * b);
+                check((x / b * b).wrapping_sub(1));
+            }
+        }
     }
 }

@@ -1,0 +1,914 @@
+//! The peers benchmark: the crate's optimized forms beside its reference and beside ports of
+//! the timers and counters of two open IEC 61131-3 runtimes, on the same deterministic inputs
+//! in one run, with a copy of the same state as the floor of the bulk scans. At the end it
+//! prints a summary table with every ratio of issue 17 and whether its goal is met.
+//!
+//! ```sh
+//! cargo bench --bench peers                     # every workload, then the summary
+//! cargo bench --bench peers -- "step TON"       # one group (the summary shows what ran)
+//! ```
+//!
+//! Timing: criterion runs every workload (`iter_custom`); the summary takes, per workload, the
+//! median time per iteration of its last 20 samples, divided by the steps of an iteration.
+//!
+//! The peers, ported in [`rusty`] and [`matiec`]:
+//!
+//! - RuSTy (github `PLC-lang/rusty`), its standard library written in Rust,
+//!   `libs/stdlib/src/timers.rs` and `libs/stdlib/src/counters.rs`.
+//! - matiec (github `beremiz/matiec`), the standard function blocks written in ST
+//!   (`lib/timer.txt`, `lib/counter.txt`, `lib/edge_detection.txt`) as they are compiled to C in
+//!   `lib/C/iec_std_FB.h`; OpenPLC v3 ships the same blocks in `utils/matiec_src`.
+//!
+//! Every port was written from a reading of the algorithm; no source text was copied. All of
+//! them have one interface: timers `call(input, pt_ms, now_ms) -> (Q, ET in ms)`, counters
+//! `call(cu_or_cd, r_or_ld, pv) -> (Q, CV)`. The clock is a free-running `u32` millisecond
+//! counter that the caller passes; where a runtime reads its own clock (RuSTy: the OS monotonic
+//! clock through `std::time::Instant`; matiec: the global `__CURRENT_TIME`), the port reads
+//! `now_ms` instead. The peers have TON, TOF, TP, CTU and CTD; TONR, CTUD and the S5 blocks are
+//! measured against the reference alone.
+//!
+//! The ports compute what their runtime computes, which is not always what S7 computes (below):
+//! on the same input stream they take other paths now and then (a TP pulse swallowed, a counter
+//! stopped at PV), so their times are those of the same inputs, not of the same outputs.
+//!
+//! # Where they differ from S7-1200
+//!
+//! The S7-1200 semantics as the crate models them: PT is latched when the timer starts; expiry
+//! when ET >= PT; ET then stays at PT; START is a copy of a free-running wrapping 32-bit
+//! millisecond clock and the elapsed time is `now - START` modulo 2^32; a negative PT counts as
+//! 0; counters saturate at the limits of their type and never wrap; CTUD with CU and CD rising
+//! together leaves CV unchanged; the edge memories of a counter take the input on every call,
+//! also while R or LD holds.
+//!
+//! | Point | S7-1200 | RuSTy | matiec |
+//! |---|---|---|---|
+//! | PT while running | latched at start | read on every call: ET clamp and expiry use the current PT, also after expiry | read on every call until expiry (TON/TP/TOF state 1); ignored after |
+//! | Expiry | ET >= PT | elapsed > PT (`elapsed <= PT` is "in range"); ET = min(PT, elapsed) reaches PT one unit before Q changes | START + PT <= CURRENT, i.e. ET >= PT |
+//! | Expiry tested on the starting call | yes (PT = 0: TON Q = 1, TP no pulse, TOF Q = 0 at once) | no: TON Q = 0, TP and TOF Q = 1 on the starting call | no: same as RuSTy |
+//! | After expiry | timer stops, ET = PT | stays "running": the clock is read and ET, Q recomputed on every call | STATE = 2, ET frozen at the PT of that moment |
+//! | Clock | wrapping u32 ms, elapsed = now - START mod 2^32 | monotonic `Instant` (never wraps), read up to twice per call; port: now - START mod 2^32 | absolute 64-bit timespec `__CURRENT_TIME` (never wraps), compared as START + PT <= CURRENT; port: a running timer stalls when `now_ms` wraps |
+//! | Negative PT | taken as 0 | never expires (PT converted to unsigned), ET = PT < 0 | expires on the first update, ET = PT < 0 |
+//! | TP retrigger | new pulse on any rising IN when no pulse runs | re-armed only by a falling IN seen after expiry: if IN fell during the pulse, the next trigger is swallowed | new pulse needs STATE = 0: a rising IN on the first call after the pulse has run out is lost (expiry is noticed after the start test) |
+//! | CTU limit | counts past PV, saturates at the type max | counts past PV, saturates at the type max | stops at PV (counts only while CV < PV) |
+//! | CTD limit | counts below 0, saturates at the type min | counts below 0, saturates at the type min | stops at 0 (counts only while CV > 0) |
+//! | Edge memory while R/LD holds | updated | updated (since PR #1877, 2026; before, R/LD froze it and releasing R with CU held counted once) | updated (R_TRIG called before the R/LD test) |
+//! | CTUD | CU and CD rising together: unchanged | exists, not ported: edges evaluated only when R = LD = 0 | exists, not ported: same rule, bounded by PV and 0 |
+//! | Per-call overhead | - | instance carries a vtable word | EN/ENO test, a force-flag test on every write (`__SET_VAR`), a nested R_TRIG block in the counters |
+
+// `criterion` generates undocumented items; the ports keep members they never read.
+#![allow(missing_docs, dead_code)]
+
+#[path = "../common/mod.rs"]
+mod common;
+pub mod matiec;
+pub mod rusty;
+
+use std::collections::BTreeMap;
+use std::hint::black_box;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use common::{Step, AREA, BANK, SCANS, STEPS};
+use criterion::{Bencher, Criterion};
+use plc_timers::counter::s5::{
+    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
+};
+use plc_timers::counter::{
+    BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps, CounterRef,
+};
+use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef, TonBank};
+use plc_timers::s5::{
+    S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerMemory, TimerWord,
+};
+use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+
+/// The integer types the counter ports run on: `i16` (INT), `i32` (DINT), `i64` (LINT).
+///
+/// Both runtimes guard every `+ 1` and `- 1` by a comparison first, so the plain operators of
+/// [`PeerInt::plus_one`] and [`PeerInt::minus_one`] never overflow in a faithful port.
+pub trait PeerInt: Copy + Ord + Default + core::fmt::Debug {
+    /// 0.
+    const ZERO: Self;
+    /// The type's smallest value.
+    const MIN: Self;
+    /// The type's largest value.
+    const MAX: Self;
+    /// `self + 1`.
+    fn plus_one(self) -> Self;
+    /// `self - 1`.
+    fn minus_one(self) -> Self;
+}
+
+macro_rules! peer_int {
+    ($($t:ty),*) => {$(
+        impl PeerInt for $t {
+            const ZERO: Self = 0;
+            const MIN: Self = <$t>::MIN;
+            const MAX: Self = <$t>::MAX;
+            #[inline(always)]
+            fn plus_one(self) -> Self {
+                self + 1
+            }
+            #[inline(always)]
+            fn minus_one(self) -> Self {
+                self - 1
+            }
+        }
+    )*};
+}
+
+peer_int!(i16, i32, i64);
+
+// ---------------------------------------------------------------------------------------------
+// Timing: criterion drives every workload; each sample's time per unit is kept for the summary.
+
+/// Per workload (`group/name`), the time per unit (ns per step, or µs per scan) of every sample.
+static SAMPLES: Mutex<BTreeMap<String, Vec<f64>>> = Mutex::new(BTreeMap::new());
+
+/// How many of a workload's last samples the summary takes the median of (criterion's warm-up
+/// calls come first and are left out).
+const SUMMARY_SAMPLES: usize = 20;
+
+/// Runs `routine` (one iteration: `units` steps, or one scan) under criterion, timing it with
+/// `iter_custom` and recording each sample's time per unit, scaled by `scale` (1 for ns, 1e-3
+/// for µs).
+fn timed(b: &mut Bencher, key: &str, units: usize, scale: f64, mut routine: impl FnMut()) {
+    b.iter_custom(|iters| {
+        let start = Instant::now();
+        for _ in 0..iters {
+            routine();
+        }
+        let elapsed = start.elapsed();
+        record(key, elapsed, iters, units, scale);
+        elapsed
+    });
+}
+
+/// Like [`timed`], for routines that time themselves (to leave out an untimed restore).
+fn timed_custom(b: &mut Bencher, key: &str, scale: f64, mut routine: impl FnMut(u64) -> Duration) {
+    b.iter_custom(|iters| {
+        let elapsed = routine(iters);
+        record(key, elapsed, iters, 1, scale);
+        elapsed
+    });
+}
+
+fn record(key: &str, elapsed: Duration, iters: u64, units: usize, scale: f64) {
+    let per_unit = elapsed.as_nanos() as f64 / iters as f64 / units as f64 * scale;
+    SAMPLES
+        .lock()
+        .expect("no panic while holding the lock")
+        .entry(key.to_owned())
+        .or_default()
+        .push(per_unit);
+}
+
+/// The median of a workload's last samples, if it ran.
+fn median(key: &str) -> Option<f64> {
+    let samples = SAMPLES.lock().expect("no panic while holding the lock");
+    let all = samples.get(key)?;
+    let mut last: Vec<f64> = all[all.len().saturating_sub(SUMMARY_SAMPLES)..].to_vec();
+    last.sort_by(f64::total_cmp);
+    let n = last.len();
+    Some(if n % 2 == 1 {
+        last[n / 2]
+    } else {
+        (last[n / 2 - 1] + last[n / 2]) / 2.0
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// One step: 1 024 steps of one block per iteration, the inputs drawn beforehand.
+
+/// Instances of a block in a one-step workload, called in turn as a scan calls them.
+const INSTANCES: usize = 8;
+
+/// A one-step input stream as every implementation reads it: per step, the input bits of each
+/// of `INSTANCES` instances (instance `j` reads the stream `j * STEPS / INSTANCES` steps
+/// further on, so that the instances are in different states) and the step's CPU time relative
+/// to the start of an iteration; and the time an iteration spans (the next iteration continues
+/// from there, so time never goes back). Every implementation builds its call's arguments from
+/// the same bits inside the timed loop, so the decoding costs all of them alike.
+///
+/// Why several instances: a PLC calls each of its timers once per scan, with the other
+/// timers' calls in between. One instance called back to back would instead measure the
+/// latency of a chain of calls through the same memory (each call waiting for the previous
+/// call's stores), which no program runs.
+struct Stream {
+    bits: Vec<[u8; INSTANCES]>,
+    times: Vec<u64>,
+    span: u64,
+}
+
+impl Stream {
+    fn new(steps: &[Step]) -> Stream {
+        let mut t = 0;
+        let times = steps
+            .iter()
+            .map(|s| {
+                t += s.dt;
+                t
+            })
+            .collect();
+        let bits = (0..steps.len())
+            .map(|i| core::array::from_fn(|j| steps[(i + j * STEPS / INSTANCES) % STEPS].bits))
+            .collect();
+        Stream {
+            bits,
+            times,
+            span: t,
+        }
+    }
+
+    /// Times `step(instance, bits, now)` over the stream under criterion as workload `key`,
+    /// for `INSTANCES` instances made by `new`, each output passed to `black_box`.
+    fn bench<T, O>(
+        &self,
+        b: &mut Bencher,
+        key: &str,
+        new: impl Fn() -> T,
+        mut step: impl FnMut(&mut T, u8, u64) -> O,
+    ) {
+        let mut instances: [T; INSTANCES] = core::array::from_fn(|_| new());
+        let mut base = 0;
+        timed(b, key, STEPS * INSTANCES, 1.0, || {
+            for (bits, &t) in self.bits.iter().zip(&self.times) {
+                let now = base + t;
+                for (instance, &bits) in instances.iter_mut().zip(bits) {
+                    black_box(step(instance, bits, now));
+                }
+            }
+            base += self.span;
+        });
+    }
+}
+
+/// Bit `i` of a step's input bits.
+#[inline(always)]
+fn bit(bits: u8, i: u32) -> bool {
+    bits >> i & 1 != 0
+}
+
+/// PT of the IEC timers, in ms.
+const IEC_PT_MS: i32 = 30;
+
+/// One group per IEC timer kind: reference, optimized and the peers, on IN = bit 0 (and R =
+/// bit 2 for TONR).
+fn step_iec(c: &mut Criterion, stream: &Stream) {
+    const PT: Time = Time::from_millis(IEC_PT_MS);
+    for kind in IecKind::ALL {
+        let group = format!("step {}", kind.name());
+        let mut g = c.benchmark_group(&group);
+        let input = |b: u8| IecInput::new(bit(b, 0), PT).with_reset(bit(b, 2));
+        g.bench_function("reference", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/reference"),
+                IecTimerRef::<u32>::new,
+                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
+            )
+        });
+        g.bench_function("optimized", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/optimized"),
+                IecTimer::new,
+                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
+            )
+        });
+        macro_rules! peer {
+            ($name:literal, $ty:ty) => {
+                g.bench_function($name, |b| {
+                    stream.bench(b, &format!("{group}/{}", $name), <$ty>::new, |t, x, now| {
+                        t.call(bit(x, 0), IEC_PT_MS, now as u32)
+                    })
+                });
+            };
+        }
+        match kind {
+            IecKind::Ton => {
+                peer!("RuSTy", rusty::Ton);
+                peer!("matiec", matiec::Ton);
+            }
+            IecKind::Tof => {
+                peer!("RuSTy", rusty::Tof);
+                peer!("matiec", matiec::Tof);
+            }
+            IecKind::Tp => {
+                peer!("RuSTy", rusty::Tp);
+                peer!("matiec", matiec::Tp);
+            }
+            IecKind::Tonr => {}
+        }
+        g.finish();
+    }
+}
+
+/// PV of the IEC counters.
+const COUNTER_PV: i16 = 10;
+
+/// One group per IEC counter kind (INT): CU = bit 0, CD = bit 1, R = bit 2, LD = bit 3; the
+/// peers' CTU takes (CU, R), their CTD (CD, LD).
+fn step_counters(c: &mut Criterion, stream: &Stream) {
+    let input = |b: u8| CounterInput {
+        cu: bit(b, 0),
+        cd: bit(b, 1),
+        r: bit(b, 2),
+        ld: bit(b, 3),
+        pv: COUNTER_PV,
+    };
+    for kind in CounterKind::ALL {
+        let group = format!("step {}", kind.name());
+        let mut g = c.benchmark_group(&group);
+        g.bench_function("reference", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/reference"),
+                CounterRef::<i16>::new,
+                |t, x, _| t.call(kind, input(x)),
+            )
+        });
+        g.bench_function("optimized", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/optimized"),
+                Counter::<i16>::new,
+                |t, x, _| t.call(kind, input(x)),
+            )
+        });
+        macro_rules! peer {
+            ($name:literal, $ty:ty, $count:literal, $level:literal) => {
+                g.bench_function($name, |b| {
+                    stream.bench(b, &format!("{group}/{}", $name), <$ty>::new, |t, x, _| {
+                        t.call(bit(x, $count), bit(x, $level), COUNTER_PV)
+                    })
+                });
+            };
+        }
+        match kind {
+            CounterKind::Ctu => {
+                peer!("RuSTy", rusty::Ctu<i16>, 0, 2);
+                peer!("matiec", matiec::Ctu<i16>, 0, 2);
+            }
+            CounterKind::Ctd => {
+                peer!("RuSTy", rusty::Ctd<i16>, 1, 3);
+                peer!("matiec", matiec::Ctd<i16>, 1, 3);
+            }
+            CounterKind::Ctud => {}
+        }
+        g.finish();
+    }
+}
+
+/// One group per S5 timer kind (S = bit 0, R = bit 2, FR = 0 as in a LAD box, TV 5 x 10 ms)
+/// and per S5 counter kind (CU = bit 0, CD = bit 1, R = bit 2, S = bit 3, PV C#5).
+fn step_s5(c: &mut Criterion, stream: &Stream) {
+    const TV: S5Time = plc_timers::s5time!("S5T#50MS");
+    let input = |b: u8| S5Input::new(bit(b, 0), bit(b, 2), TV);
+    for kind in S5Kind::ALL {
+        let group = format!("step {}", kind.name());
+        let mut g = c.benchmark_group(&group);
+        g.bench_function("reference", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/reference"),
+                S5TimerRef::new,
+                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
+            )
+        });
+        g.bench_function("optimized", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/optimized"),
+                S5Timer::new,
+                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
+            )
+        });
+        g.finish();
+    }
+    let pv = CounterPreset::new(5).expect("0..=999");
+    let input = |b: u8| S5CounterInput {
+        cu: bit(b, 0),
+        cd: bit(b, 1),
+        r: bit(b, 2),
+        s: bit(b, 3),
+        fr: false,
+        pv,
+    };
+    for kind in S5CounterKind::ALL {
+        let group = format!("step {}", kind.name());
+        let mut g = c.benchmark_group(&group);
+        g.bench_function("reference", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/reference"),
+                S5CounterRef::new,
+                |t, x, _| t.call(kind, input(x)),
+            )
+        });
+        g.bench_function("optimized", |b| {
+            stream.bench(
+                b,
+                &format!("{group}/optimized"),
+                S5Counter::new,
+                |t, x, _| t.call(kind, input(x)),
+            )
+        });
+        g.finish();
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bulk: one scan of a plant per iteration.
+
+/// A copy of `bytes` bytes from one buffer to another: the floor of a scan that reads and
+/// writes a state of that size once.
+fn copy_floor(b: &mut Bencher, key: &str, bytes: usize) {
+    let src = vec![0x5Au8; bytes];
+    let mut dst = vec![0u8; bytes];
+    timed(b, key, 1, 1e-3, || {
+        dst.copy_from_slice(black_box(&src));
+        black_box(&mut dst);
+    });
+}
+
+/// The clock of scan `k`: a scan every 10 ms.
+fn scan_time(k: u64) -> u64 {
+    10 * k
+}
+
+fn bulk_ton(c: &mut Criterion) {
+    let plant = common::ton_plant();
+    let pt: Box<[Time; BANK]> = plant.pt.clone().try_into().expect("BANK PTs");
+    let scans: Vec<Box<[bool; BANK]>> = plant
+        .scans
+        .iter()
+        .map(|s| s.clone().try_into().expect("BANK inputs"))
+        .collect();
+    let pt_ms: Vec<i32> = plant.pt.iter().map(|t| t.as_millis()).collect();
+    let group = "scan of 10 048 TON";
+    let mut g = c.benchmark_group(group);
+    /// The per-instance loop: every timer called once, its outputs passed to `black_box`.
+    macro_rules! per_instance {
+        ($name:literal, $new:expr, |$t:ident, $input:ident, $i:ident, $now:ident| $call:expr) => {
+            g.bench_function($name, |b| {
+                let mut timers = vec![$new; BANK];
+                let mut k = 0u64;
+                timed(b, &format!("{group}/{}", $name), 1, 1e-3, || {
+                    k += 1;
+                    let $now = scan_time(k);
+                    let inputs = &scans[k as usize % SCANS];
+                    for ($i, ($t, &$input)) in timers.iter_mut().zip(inputs.iter()).enumerate() {
+                        black_box($call);
+                    }
+                })
+            });
+        };
+    }
+    per_instance!(
+        "reference (IecTimerRef array)",
+        IecTimerRef::<u32>::new(),
+        |t, input, i, now| {
+            t.call(
+                IecKind::Ton,
+                CpuTime::from_millis(now),
+                IecInput::new(input, pt[i]),
+            )
+        }
+    );
+    per_instance!(
+        "optimized (IecTimer array)",
+        IecTimer::new(),
+        |t, input, i, now| {
+            t.call(
+                IecKind::Ton,
+                CpuTime::from_millis(now),
+                IecInput::new(input, pt[i]),
+            )
+        }
+    );
+    per_instance!("RuSTy (array)", rusty::Ton::new(), |t, input, i, now| {
+        t.call(input, pt_ms[i], now as u32)
+    });
+    per_instance!("matiec (array)", matiec::Ton::new(), |t, input, i, now| {
+        t.call(input, pt_ms[i], now as u32)
+    });
+    g.bench_function("optimized (TonBank)", |b| {
+        let mut bank = Box::new(TonBank::<BANK>::new());
+        let mut k = 0u64;
+        timed(b, &format!("{group}/optimized (TonBank)"), 1, 1e-3, || {
+            k += 1;
+            bank.scan(
+                CpuTime::from_millis(scan_time(k)),
+                &scans[k as usize % SCANS],
+                &pt,
+            );
+            black_box(&mut bank);
+        })
+    });
+    g.bench_function("copy of the TonBank state", |b| {
+        copy_floor(
+            b,
+            &format!("{group}/copy of the TonBank state"),
+            size_of::<TonBank<BANK>>(),
+        )
+    });
+    g.bench_function("copy of the IecTimer array", |b| {
+        copy_floor(
+            b,
+            &format!("{group}/copy of the IecTimer array"),
+            BANK * size_of::<IecTimer>(),
+        )
+    });
+    g.finish();
+}
+
+fn bulk_counters(c: &mut Criterion, up_only: bool) {
+    let scans: Vec<[Box<[bool; BANK]>; 4]> = common::counter_scans(up_only)
+        .into_iter()
+        .map(|s| [s.cu, s.cd, s.r, s.ld].map(|v| v.try_into().expect("BANK inputs")))
+        .collect();
+    let pv: i16 = 100;
+    let (group, kind) = if up_only {
+        ("bank of 10 048 CTU INT", CounterKind::Ctu)
+    } else {
+        ("bank of 10 048 CTUD INT", CounterKind::Ctud)
+    };
+    let mut g = c.benchmark_group(group);
+    macro_rules! per_instance {
+        ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {
+            g.bench_function($name, |b| {
+                let mut counters = vec![$new; BANK];
+                let mut k = 0usize;
+                timed(b, &format!("{group}/{}", $name), 1, 1e-3, || {
+                    k += 1;
+                    let $s = &scans[k % scans.len()];
+                    for ($i, $t) in counters.iter_mut().enumerate() {
+                        black_box($call);
+                    }
+                })
+            });
+        };
+    }
+    per_instance!(
+        "reference (CounterRef array)",
+        CounterRef::<i16>::new(),
+        |t, s, i| {
+            t.call(
+                kind,
+                CounterInput {
+                    cu: s[0][i],
+                    cd: s[1][i],
+                    r: s[2][i],
+                    ld: s[3][i],
+                    pv,
+                },
+            )
+        }
+    );
+    per_instance!(
+        "optimized (Counter array)",
+        Counter::<i16>::new(),
+        |t, s, i| {
+            t.call(
+                kind,
+                CounterInput {
+                    cu: s[0][i],
+                    cd: s[1][i],
+                    r: s[2][i],
+                    ld: s[3][i],
+                    pv,
+                },
+            )
+        }
+    );
+    if up_only {
+        per_instance!("RuSTy (array)", rusty::Ctu::<i16>::new(), |t, s, i| {
+            t.call(s[0][i], s[2][i], pv)
+        });
+        per_instance!("matiec (array)", matiec::Ctu::<i16>::new(), |t, s, i| {
+            t.call(s[0][i], s[2][i], pv)
+        });
+    }
+    g.bench_function("optimized (CounterBank)", |b| {
+        let mut bank = Box::new(CounterBank::<i16, BANK>::new());
+        let mut k = 0usize;
+        timed(
+            b,
+            &format!("{group}/optimized (CounterBank)"),
+            1,
+            1e-3,
+            || {
+                k += 1;
+                let s = &scans[k % scans.len()];
+                bank.scan(
+                    &BankInputs {
+                        cu: &s[0],
+                        cd: &s[1],
+                        r: &s[2],
+                        ld: &s[3],
+                    },
+                    pv,
+                );
+                black_box(&mut bank);
+            },
+        )
+    });
+    g.bench_function("copy of the CounterBank state", |b| {
+        copy_floor(
+            b,
+            &format!("{group}/copy of the CounterBank state"),
+            size_of::<CounterBank<i16, BANK>>(),
+        )
+    });
+    g.finish();
+}
+
+/// Ticks between two restores of the timer area: few enough that the area stays about as busy
+/// as at the start (a tenth of the running 10 ms timers run out).
+const TICKS_PER_RESTORE: u64 = 100;
+
+fn bulk_area(c: &mut Criterion) {
+    let contents = common::area_contents(AREA);
+    let states: Vec<S5State> = contents
+        .iter()
+        .enumerate()
+        .map(|(i, c)| match *c {
+            None => S5State::RESET,
+            Some((value, base)) => {
+                let on_delay = matches!(S5Kind::ALL[i % 5], S5Kind::SOdt | S5Kind::SOdts);
+                S5State {
+                    running: true,
+                    value,
+                    base: TimeBase::from_bits(base),
+                    q: !on_delay,
+                    q_on_expiry: on_delay,
+                    s_prev: true,
+                    fr_prev: false,
+                }
+            }
+        })
+        .collect();
+    let refs: Vec<S5TimerRef> = states
+        .iter()
+        .map(|&s| S5TimerRef::from_state(s, CpuTime::ZERO).expect("a valid state"))
+        .collect();
+    let mut words = Box::new([TimerWord::RESET; AREA]);
+    for (w, &s) in words.iter_mut().zip(&states) {
+        *w = TimerWord::from_state(s).expect("a valid state");
+    }
+    let area = Box::new(TimerMemory::<AREA>::from_words(*words, CpuTime::ZERO));
+    let group = "timer area of 65 536, one 10 ms tick";
+    let mut g = c.benchmark_group(group);
+    // `work` runs one tick; every TICKS_PER_RESTORE ticks the contents are restored, untimed.
+    fn restoring<T: Clone>(
+        b: &mut Bencher,
+        key: &str,
+        original: &T,
+        mut work: impl FnMut(&mut T, u64),
+    ) {
+        let mut state = original.clone();
+        let mut k = 0u64;
+        timed_custom(b, key, 1e-3, |iters| {
+            let mut total = Duration::ZERO;
+            for _ in 0..iters {
+                k += 1;
+                if k % TICKS_PER_RESTORE == 0 {
+                    state.clone_from(original);
+                }
+                let start = Instant::now();
+                work(&mut state, k);
+                total += start.elapsed();
+                black_box(&mut state);
+            }
+            total
+        });
+    }
+    g.bench_function("reference (S5TimerRef array)", |b| {
+        restoring(
+            b,
+            &format!("{group}/reference (S5TimerRef array)"),
+            &refs,
+            |refs, _| {
+                // The OS tick of the 10 ms base: every timer of that base loses one unit.
+                for t in refs.iter_mut() {
+                    if t.state().base == TimeBase::Ms10 {
+                        t.tick(1);
+                    }
+                }
+            },
+        )
+    });
+    g.bench_function("optimized (TimerMemory::tick)", |b| {
+        restoring(
+            b,
+            &format!("{group}/optimized (TimerMemory::tick)"),
+            &area,
+            |a, _| a.tick(TimeBase::Ms10, 1),
+        )
+    });
+    g.bench_function("optimized (TimerMemory::advance_to)", |b| {
+        restoring(
+            b,
+            &format!("{group}/optimized (TimerMemory::advance_to)"),
+            &area,
+            |a, k| {
+                // 10 ms later: the 10 ms tick, and every 10th call the 100 ms tick too.
+                a.advance_to(CpuTime::from_millis(10 * (k % TICKS_PER_RESTORE)))
+            },
+        )
+    });
+    g.bench_function("copy of the TimerMemory state", |b| {
+        copy_floor(
+            b,
+            &format!("{group}/copy of the TimerMemory state"),
+            size_of::<TimerMemory<AREA>>(),
+        )
+    });
+    g.finish();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The summary.
+
+fn fmt(v: Option<f64>) -> String {
+    v.map_or("-".into(), |v| format!("{v:.2}"))
+}
+
+fn verdict(ok: Option<bool>) -> &'static str {
+    match ok {
+        Some(true) => "met",
+        Some(false) => "MISSED",
+        None => "-",
+    }
+}
+
+fn summary() {
+    println!();
+    println!("== Summary (median of the last {SUMMARY_SAMPLES} samples of each workload)");
+    println!();
+    println!("One step, ns per step (1 024 steps of the same input stream per iteration):");
+    println!();
+    println!("| block | reference | optimized | RuSTy port | matiec port | reference / optimized | best peer / optimized | goal: optimized fastest |");
+    println!("|---|---|---|---|---|---|---|---|");
+    let blocks: Vec<&str> = IecKind::ALL
+        .iter()
+        .map(|k| k.name())
+        .chain(CounterKind::ALL.iter().map(|k| k.name()))
+        .chain(S5Kind::ALL.iter().map(|k| k.name()))
+        .chain(S5CounterKind::ALL.iter().map(|k| k.name()))
+        .collect();
+    for block in blocks {
+        let get = |name: &str| median(&format!("step {block}/{name}"));
+        let (r, o, ru, ma) = (
+            get("reference"),
+            get("optimized"),
+            get("RuSTy"),
+            get("matiec"),
+        );
+        let best_peer = match (ru, ma) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
+        let ratio = |x: Option<f64>| x.zip(o).map(|(x, o)| x / o);
+        let ok = o.map(|o| r.is_none_or(|r| o <= r) && best_peer.is_none_or(|p| o <= p));
+        println!(
+            "| {block} | {} | {} | {} | {} | {}x | {} | {} |",
+            fmt(r),
+            fmt(o),
+            fmt(ru),
+            fmt(ma),
+            fmt(ratio(r)),
+            ratio(best_peer).map_or("-".into(), |v| format!("{v:.2}x")),
+            verdict(ok),
+        );
+    }
+    println!();
+    println!("Bulk, µs per scan:");
+    println!();
+    println!("| workload | form | µs per scan | vs copy of its state | reference / this |");
+    println!("|---|---|---|---|---|");
+    let bulk: [(&str, &str, &str, &[&str]); 4] = [
+        (
+            "scan of 10 048 TON",
+            "reference (IecTimerRef array)",
+            "copy of the TonBank state",
+            &[
+                "optimized (TonBank)",
+                "optimized (IecTimer array)",
+                "RuSTy (array)",
+                "matiec (array)",
+            ],
+        ),
+        (
+            "bank of 10 048 CTUD INT",
+            "reference (CounterRef array)",
+            "copy of the CounterBank state",
+            &["optimized (CounterBank)", "optimized (Counter array)"],
+        ),
+        (
+            "bank of 10 048 CTU INT",
+            "reference (CounterRef array)",
+            "copy of the CounterBank state",
+            &[
+                "optimized (CounterBank)",
+                "optimized (Counter array)",
+                "RuSTy (array)",
+                "matiec (array)",
+            ],
+        ),
+        (
+            "timer area of 65 536, one 10 ms tick",
+            "reference (S5TimerRef array)",
+            "copy of the TimerMemory state",
+            &[
+                "optimized (TimerMemory::tick)",
+                "optimized (TimerMemory::advance_to)",
+            ],
+        ),
+    ];
+    for (group, reference, floor, forms) in bulk {
+        let get = |name: &str| median(&format!("{group}/{name}"));
+        let (r, f) = (get(reference), get(floor));
+        println!(
+            "| {group} | {reference} | {} | {} | 1.00x |",
+            fmt(r),
+            ratio_x(r, f)
+        );
+        for form in forms {
+            let v = get(form);
+            println!(
+                "| {group} | {form} | {} | {} | {} |",
+                fmt(v),
+                ratio_x(v, f),
+                ratio_x(r, v)
+            );
+        }
+        println!("| {group} | {floor} | {} | 1.00x | |", fmt(f));
+    }
+    println!();
+    println!("Goals (issue 17):");
+    let goal = |what: &str, value: Option<f64>, ok: fn(f64) -> bool| {
+        println!(
+            "- {what}: {} {}",
+            value.map_or("-".into(), |v| format!("{v:.2}x")),
+            verdict(value.map(ok))
+        );
+    };
+    let ratio = |a: &str, b: &str| median(a).zip(median(b)).map(|(a, b)| a / b);
+    goal(
+        "TonBank scan / copy of its state (<= 3x)",
+        ratio(
+            "scan of 10 048 TON/optimized (TonBank)",
+            "scan of 10 048 TON/copy of the TonBank state",
+        ),
+        |v| v <= 3.0,
+    );
+    goal(
+        "CounterBank CTUD scan / copy of its state (<= 3x)",
+        ratio(
+            "bank of 10 048 CTUD INT/optimized (CounterBank)",
+            "bank of 10 048 CTUD INT/copy of the CounterBank state",
+        ),
+        |v| v <= 3.0,
+    );
+    goal(
+        "TimerMemory::tick of 65 536 / copy of its state (<= 3x)",
+        ratio(
+            "timer area of 65 536, one 10 ms tick/optimized (TimerMemory::tick)",
+            "timer area of 65 536, one 10 ms tick/copy of the TimerMemory state",
+        ),
+        |v| v <= 3.0,
+    );
+    goal(
+        "IecTimerRef array / IecTimer array, 10 048 TON (>= 2x)",
+        ratio(
+            "scan of 10 048 TON/reference (IecTimerRef array)",
+            "scan of 10 048 TON/optimized (IecTimer array)",
+        ),
+        |v| v >= 2.0,
+    );
+}
+
+fn ratio_x(a: Option<f64>, b: Option<f64>) -> String {
+    a.zip(b)
+        .map_or("-".into(), |(a, b)| format!("{:.2}x", a / b))
+}
+
+fn main() {
+    let mut c = Criterion::default()
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(30)
+        .configure_from_args();
+    let stream = Stream::new(&common::step_stream(1));
+    step_iec(&mut c, &stream);
+    step_counters(&mut c, &stream);
+    step_s5(&mut c, &stream);
+    bulk_ton(&mut c);
+    bulk_counters(&mut c, false);
+    bulk_counters(&mut c, true);
+    bulk_area(&mut c);
+    c.final_summary();
+    summary();
+}
