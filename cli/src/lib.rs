@@ -1,5 +1,6 @@
-//! The `plc-timers` command's machinery: CSV traces through the reference semantics of the
-//! `plc-timers` crate, checks of other implementations' outputs, test vectors and diagrams.
-//! The contract is `spec/cli.md`.
+//! The `plc-timers` command's machinery: CSV traces through the blocks of the `plc-timers`
+//! crate (reference or optimized), conformance checks that explain a difference by the
+//! requirement that decides it, test vectors, timing diagrams and VCD export. Every block list
+//! comes from [`plc_timers::catalog::Block`]; the contract is `spec/cli.md`.
 
 pub mod trace;

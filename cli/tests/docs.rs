@@ -1,60 +1,56 @@
-//! The timing diagrams in `docs/` are the ones the renderer draws from `examples/traces/` now.
-//! Regenerate them with `UPDATE_DOCS=1 cargo test --test docs`.
+//! The timing diagrams: `docs/` holds the ones the renderer draws from `examples/traces/` now
+//! (`UPDATE_DOCS=1 cargo test -p plc-timers-cli --test docs` redraws them); a 2 M-row trace is
+//! drawn in bounded memory into a small SVG with no edge lost; `--from/--to` zoom; VCD export
+//! parses back with the `vcd` crate.
+
+mod common;
 
 use std::fs;
 
-use plc_timers::trace::{diagram, lookup, record, BlockOptions, PresetOption};
+use plc_timers::catalog::Block;
+use plc_timers_cli::trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
+use plc_timers_cli::trace::{examples, vcd, BlockSpec};
 
-/// (example file, block, preset option, value): one per block kind.
-const EXAMPLES: &[(&str, &str, &str, &str)] = &[
-    ("s_pulse", "S_PULSE", "tv", "S5T#50MS"),
-    ("s_pext", "S_PEXT", "tv", "S5T#50MS"),
-    ("s_odt", "S_ODT", "tv", "S5T#50MS"),
-    ("s_odts", "S_ODTS", "tv", "S5T#50MS"),
-    ("s_offdt", "S_OFFDT", "tv", "S5T#50MS"),
-    ("tp", "TP", "pt", "T#100ms"),
-    ("ton", "TON", "pt", "T#500ms"),
-    ("tof", "TOF", "pt", "T#200ms"),
-    ("tonr", "TONR", "pt", "T#300ms"),
-    ("ctu", "CTU", "pv", "3"),
-    ("ctd", "CTD", "pv", "2"),
-    ("ctud", "CTUD", "pv", "4"),
-    ("s_cu", "S_CU", "pv", "C#998"),
-    ("s_cd", "S_CD", "pv", "C#2"),
-    ("s_cud", "S_CUD", "pv", "C#5"),
-];
+fn draw(
+    spec: BlockSpec,
+    presets: &[(&str, &str)],
+    trace: &[u8],
+    window: Window,
+) -> (String, Stats) {
+    let mut out = Vec::new();
+    let stats = diagram::svg(spec, presets, trace, window, &mut out).expect("draws");
+    (String::from_utf8(out).expect("UTF-8"), stats)
+}
 
+fn example_svg(e: &examples::Example) -> (String, Stats) {
+    let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
+    draw(e.spec, &presets, e.text.as_bytes(), Window::default())
+}
+
+/// CLI-DIAG-01: one diagram per block in `docs/`, each the renderer's drawing of its example:
+/// a waveform per boolean input and output, one ramp with a value axis and the preset line.
 #[test]
 fn docs_diagrams_are_current() {
     let update = std::env::var_os("UPDATE_DOCS").is_some();
     let mut stale = Vec::new();
-    for &(file, block, option, value) in EXAMPLES {
-        let mut b = lookup(block, &BlockOptions::default()).expect("known block");
-        let trace = fs::read(format!("examples/traces/{file}.csv")).expect("example exists");
-        let presets: [PresetOption<'_>; 1] = [(option, value)];
-        let rec = record(b.as_mut(), &trace[..], &presets).expect("example runs");
-        let svg = diagram::svg(&rec);
-        // One waveform per boolean input present and per boolean output, one ramp per integer
-        // output, and a preset mark where the block has a ramp.
-        let waves = svg.matches("class=\"signal\"").count();
-        let bool_outputs = rec
-            .outputs
+    for e in examples::all().expect("examples") {
+        let (svg, stats) = example_svg(&e);
+        assert!(stats.exact);
+        let bools = e
+            .spec
+            .block
+            .inputs()
             .iter()
-            .filter(|(_, v)| matches!(v[0], plc_timers::trace::Value::Bool(_)))
+            .filter(|p| p.kind == plc_timers::catalog::ValueKind::Bool)
             .count();
-        assert_eq!(waves, rec.inputs.len() + bool_outputs, "{file}");
-        assert_eq!(
-            svg.matches("class=\"ramp\"").count(),
-            1,
-            "{file}: one ramp (ET, BI or CV)"
-        );
-        assert_eq!(
-            svg.matches("class=\"preset\"").count(),
-            1,
-            "{file}: the preset is marked"
-        );
+        let waves = svg.matches("class=\"signal\"").count();
+        assert!(waves >= 2 && waves <= bools + 2, "{}: {waves}", e.stem);
+        assert_eq!(svg.matches("class=\"ramp\"").count(), 1, "{}", e.stem);
+        assert_eq!(svg.matches("class=\"preset\"").count(), 1, "{}", e.stem);
+        assert_eq!(svg.matches("class=\"value-axis\"").count(), 1, "{}", e.stem);
+        assert!(svg.matches("class=\"tick\"").count() >= 2, "{}", e.stem);
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
-        let path = format!("docs/{file}.svg");
+        let path = common::root().join(format!("docs/{}.svg", e.stem));
         if update {
             fs::write(&path, &svg).expect("write docs");
         }
@@ -64,33 +60,199 @@ fn docs_diagrams_are_current() {
     }
     assert!(
         stale.is_empty(),
-        "stale diagrams {stale:?}; regenerate with `UPDATE_DOCS=1 cargo test --test docs`"
+        "stale diagrams {stale:?}; redraw with `UPDATE_DOCS=1 cargo test -p plc-timers-cli --test docs`"
     );
 }
 
-/// The Q waveform of TON rises where ET reaches PT (t = 2500 in the example): the polyline has a
-/// vertical step at that x.
-#[test]
-fn ton_q_rises_at_expiry() {
-    let mut b = lookup("TON", &BlockOptions::default()).expect("TON");
-    let trace = fs::read("examples/traces/ton.csv").expect("example");
-    let rec = record(b.as_mut(), &trace[..], &[("pt", "T#500ms")]).expect("runs");
-    let q = &rec.outputs[0].1;
-    let first_on = q
-        .iter()
-        .position(|v| *v == plc_timers::trace::Value::Bool(true))
-        .expect("Q rises");
-    assert_eq!(rec.time[first_on], 2500);
-    let svg = diagram::svg(&rec);
+fn polyline(svg: &str, class: &str, name: &str) -> Vec<(f64, f64)> {
     let line = svg
         .lines()
-        .find(|l| l.contains("data-name=\"Q\""))
-        .expect("Q waveform");
-    let t0 = rec.time[0] as f64;
-    let t_end = *rec.time.last().expect("rows") as f64 * 1.08;
-    let x = 80.0 + (2500.0 - t0) / (t_end - t0) * (900.0 - 80.0 - 24.0);
+        .find(|l| l.contains(&format!("class=\"{class}\" data-name=\"{name}\"")))
+        .unwrap_or_else(|| panic!("no {class} {name}"));
+    let points = line
+        .split("points=\"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .expect("points");
+    points
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').expect("x,y");
+            (x.parse().expect("x"), y.parse().expect("y"))
+        })
+        .collect()
+}
+
+/// The x of time `t` in a drawing of [t0, t_end].
+fn x_of(t: f64, t0: f64, t_end: f64) -> f64 {
+    86.0 + (t - t0) / (t_end - t0) * COLUMNS as f64
+}
+
+/// CLI-DIAG-01: TON's Q rises where ET reaches PT (t = 2500): a vertical step at that x; ET is a
+/// ramp (a sloped segment from 2000 to 2500 ms), not a staircase.
+#[test]
+fn ton_q_rises_at_expiry_and_et_ramps() {
+    let e = examples::of(Block::Ton).expect("TON example");
+    let (svg, _) = example_svg(&e);
+    let t_end = 3300.0 + 3300.0 * 0.08;
+    let x = |t: f64| (x_of(t, 0.0, t_end) * 10.0).round() / 10.0;
+    let q = polyline(&svg, "signal", "Q");
+    let step: Vec<&(f64, f64)> = q
+        .iter()
+        .filter(|p| (p.0 - x(2500.0)).abs() < 0.06)
+        .collect();
+    assert_eq!(step.len(), 2, "a vertical step at 2500: {q:?}");
+    assert_ne!(step[0].1, step[1].1);
+    let et = polyline(&svg, "ramp", "ET");
+    let i = et
+        .iter()
+        .position(|p| (p.0 - x(2000.0)).abs() < 0.06)
+        .expect("a point at 2000");
+    let (a, b) = (et[i + 1], et[i + 2]);
     assert!(
-        line.contains(&format!("{x:.1},")),
-        "a step at x = {x:.1}: {line}"
+        (a.0 - x(2250.0)).abs() < 0.06 && a.1 < et[i].1,
+        "ET rises from 2000 to 2250: {et:?}"
+    );
+    assert!(
+        b.1 < a.1 && (b.0 - x(2499.0)).abs() < 0.06,
+        "and on to 2499: {et:?}"
+    );
+}
+
+/// A TON trace of `rows` rows, 1 ms apart, IN toggling every 700 ms, with one 1 ms glitch of IN
+/// at `glitch`.
+fn long_trace(rows: u64, glitch: u64) -> Vec<u8> {
+    let mut s = Vec::with_capacity(rows as usize * 12);
+    s.extend_from_slice(b"t_ms,IN\n");
+    for t in 0..rows {
+        let level = (t / 700) % 2 == 1 || t == glitch;
+        s.extend_from_slice(format!("{t},{}\n", u8::from(level)).as_bytes());
+    }
+    s
+}
+
+/// CLI-DIAG-02: a 2 M-row trace is drawn from at most 2 x COLUMNS buckets (bounded memory,
+/// whatever the length), into an SVG under 5 MB, and a single 1 ms glitch in it is still drawn
+/// (a vertical bar in the IN waveform where it is).
+#[test]
+fn two_million_rows_bounded_and_no_edge_lost() {
+    let rows = 2_000_000;
+    let glitch = 1_234_000; // IN is 0 around it (1234000 / 700 is even)
+    assert_eq!((glitch / 700) % 2, 0);
+    let trace = long_trace(rows, glitch);
+    let (svg, stats) = draw(
+        BlockSpec::new(Block::Ton),
+        &[("pt", "T#500MS")],
+        &trace,
+        Window::default(),
+    );
+    assert_eq!(stats.rows, rows);
+    assert!(!stats.exact);
+    assert!(
+        stats.held <= 2 * COLUMNS.max(EXACT_ROWS),
+        "held {}",
+        stats.held
+    );
+    assert!(svg.len() < 5_000_000, "{} bytes", svg.len());
+    assert!(svg.len() < 500_000, "{} bytes", svg.len());
+    let t_end = (rows - 1) as f64 * 1.08;
+    let gx = x_of(glitch as f64, 0.0, t_end);
+    let input = polyline(&svg, "signal", "IN");
+    let (lo, hi) = input
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let near: Vec<&(f64, f64)> = input.iter().filter(|p| (p.0 - gx).abs() < 1.5).collect();
+    assert!(
+        near.iter().any(|p| p.1 == lo) && near.iter().any(|p| p.1 == hi),
+        "the glitch at x = {gx}: {near:?}"
+    );
+    // Memory: the buckets are fixed-size; the held count bounds them (see diagram.rs).
+}
+
+/// CLI-DIAG-02: `--from/--to` draw only that window, starting from the state the rows before
+/// left; the time axis spans exactly the window.
+#[test]
+fn window_zooms() {
+    let e = examples::of(Block::Ton).expect("TON example");
+    let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
+    let window = Window {
+        from: Some(2200),
+        to: Some(2600),
+    };
+    let (svg, stats) = draw(e.spec, &presets, e.text.as_bytes(), window);
+    assert_eq!(stats.rows, 9, "reading stops after the first row past --to");
+    assert_eq!(stats.drawn, 4, "2200 (state of 2000), 2250, 2499, 2500");
+    let q = polyline(&svg, "signal", "Q");
+    assert!((q[0].0 - 86.0).abs() < 0.06, "{q:?}");
+    assert!(
+        svg.contains(">2200</text>") && svg.contains(">2600</text>"),
+        "axis ends"
+    );
+    let et = polyline(&svg, "ramp", "ET");
+    assert!(
+        (et.last().expect("points").0 - (900.0 - 18.0)).abs() < 0.06,
+        "{et:?}"
+    );
+}
+
+/// CLI-VCD-01: the VCD of every example parses back with the `vcd` crate: a 1 ms timescale,
+/// one variable per boolean input, the preset and each output, and the values of the run.
+#[test]
+fn vcd_parses_back() {
+    for e in examples::all().expect("examples") {
+        let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
+        let mut out = Vec::new();
+        let rows = vcd::export(e.spec, &presets, e.text.as_bytes(), &mut out).expect("exports");
+        let mut parser = ::vcd::Parser::new(&out[..]);
+        let header = parser.parse_header().expect("a VCD header");
+        assert_eq!(header.timescale, Some((1, ::vcd::TimescaleUnit::MS)));
+        let module = match &header.items[0] {
+            ::vcd::ScopeItem::Scope(s) => s,
+            other => panic!("{other:?}"),
+        };
+        let names: Vec<String> = module
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                ::vcd::ScopeItem::Var(v) => Some(v.reference.clone()),
+                _ => None,
+            })
+            .collect();
+        for port in e.spec.block.outputs() {
+            assert!(
+                names.iter().any(|n| n == port.name),
+                "{}: {names:?}",
+                e.stem
+            );
+        }
+        let mut times = 0;
+        let mut last = 0;
+        for command in parser {
+            if let ::vcd::Command::Timestamp(t) = command.expect("a valid command") {
+                assert!(t >= last);
+                last = t;
+                times += 1;
+            }
+        }
+        assert!(times > 3 && times as u64 <= rows, "{}", e.stem);
+    }
+    // TON: Q rises at 2500 ms.
+    let e = examples::of(Block::Ton).expect("TON");
+    let mut out = Vec::new();
+    vcd::export(e.spec, &[("pt", "T#500MS")], e.text.as_bytes(), &mut out).expect("exports");
+    let text = String::from_utf8(out).expect("ASCII");
+    let at = text.find("#2500\n").expect("a change at 2500 ms");
+    let q_id = text
+        .lines()
+        .find(|l| l.starts_with("$var wire 1 ") && l.contains(" Q $end"))
+        .and_then(|l| l.split_whitespace().nth(3))
+        .expect("Q's id");
+    assert!(
+        text[at..]
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l == format!("1{q_id}")),
+        "{}",
+        &text[at..at + 40]
     );
 }

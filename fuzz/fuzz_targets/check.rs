@@ -1,16 +1,26 @@
 //! `plc-timers check`'s input path on arbitrary bytes (a trace that may carry outputs): the
-//! first byte picks the block; the checker returns a report or a located error, never panics.
+//! first byte picks the block; the checker returns a report or a located error, never panics,
+//! and a difference it reports names requirements of the catalog.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use plc_timers::trace::{check, lookup, BlockOptions, BLOCK_NAMES};
+use plc_timers::catalog::Block;
+use plc_timers_cli::trace::{check, rules, BlockSpec};
 
 fuzz_target!(|data: &[u8]| {
-    let Some((&selector, csv)) = data.split_first() else { return };
-    let name = BLOCK_NAMES[usize::from(selector) % BLOCK_NAMES.len()];
-    if let Ok(mut block) = lookup(name, &BlockOptions::default()) {
-        if let Ok(report) = check(block.as_mut(), csv, &[]) {
-            assert!(!report.compared.is_empty());
+    let Some((&selector, csv)) = data.split_first() else {
+        return;
+    };
+    let block = Block::ALL[usize::from(selector) % Block::ALL.len()];
+    let outputs: Option<&[&str]> = if selector & 0x80 != 0 {
+        Some(&["Q"])
+    } else {
+        None
+    };
+    if let Ok(report) = check(BlockSpec::new(block), &[], outputs, csv) {
+        assert!(!report.compared.is_empty());
+        if let Some(d) = report.difference {
+            assert!(d.why.rules.iter().all(|id| rules::rule(id).is_some()));
         }
     }
 });

@@ -6,7 +6,9 @@ use libfuzzer_sys::fuzz_target;
 use plc_timers::counter::s5::CounterPreset;
 
 fuzz_target!(|data: &[u8]| {
-    let Ok(text) = std::str::from_utf8(data) else { return };
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
     if let Ok(p) = text.parse::<CounterPreset>() {
         assert!(p.value() <= 999);
         assert_eq!(CounterPreset::from_bcd(p.to_bcd()), Ok(p));

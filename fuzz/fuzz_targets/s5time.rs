@@ -6,7 +6,9 @@ use libfuzzer_sys::fuzz_target;
 use plc_timers::time::S5Time;
 
 fuzz_target!(|data: &[u8]| {
-    let Ok(text) = std::str::from_utf8(data) else { return };
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
     if let Ok(t) = text.parse::<S5Time>() {
         assert!(t.as_millis() <= S5Time::MAX_MILLIS);
         let back: S5Time = t.to_string().parse().expect("Display output parses");

@@ -1,23 +1,330 @@
-//! Timing diagrams of a recorded trace, drawn as the manuals draw timers: inputs and Q as digital
-//! waveforms, ET / BI / CV as a stepped ramp with the preset marked, a time axis in ms.
-//! Plain SVG, no dependency.
+//! Timing diagrams (SVG) drawn as the manuals draw timers: the boolean inputs and outputs as
+//! waveforms, the integer output (ET, BI, CV) as a ramp with a labelled value axis and the
+//! preset as a dashed line, and a time axis in ms.
+//!
+//! The trace is streamed, never loaded: up to [`EXACT_ROWS`] rows are kept and drawn exactly;
+//! past that, rows are folded into at most `2 x` [`COLUMNS`] time buckets (one or two per pixel
+//! column) that keep, per signal, the first, last, smallest and largest value, so that no edge
+//! is lost however long the trace (a 1 ms pulse in a day-long trace is a vertical bar). When a
+//! row falls past the last bucket, neighbouring buckets are merged in pairs (the bucket width
+//! doubles). Memory and output size are therefore bounded whatever the trace's length.
 
 use std::fmt::Write as _;
-use std::format;
-use std::string::String;
-use std::vec::Vec;
+use std::io::{Read, Write};
 
-use super::block::Value;
-use super::runner::Recording;
-use plc_timers::time::{S5Time, Time};
+use plc_timers::catalog::ValueKind;
 
-const WIDTH: f64 = 900.0;
-const LEFT: f64 = 80.0;
-const RIGHT: f64 = 24.0;
+use super::engine::{observe, Columns, Observation, Observer, PresetOption};
+use super::error::Error;
+use super::family::{BlockSpec, Value};
+
+/// Rows drawn one by one; a longer trace is drawn from buckets.
+pub const EXACT_ROWS: usize = 2048;
+/// The width of the SVG.
+pub const WIDTH: f64 = 900.0;
+const LEFT: f64 = 86.0;
+const RIGHT: f64 = 18.0;
+/// Pixel columns of the plot area.
+pub const COLUMNS: usize = (WIDTH - LEFT - RIGHT) as usize;
 const TOP: f64 = 44.0;
 const BOOL_LANE: f64 = 36.0;
-const VALUE_LANE: f64 = 90.0;
-const AXIS: f64 = 40.0;
+const VALUE_LANE: f64 = 110.0;
+const AXIS: f64 = 44.0;
+/// Rows up to which a light vertical line marks every execution.
+const ROW_LINES: usize = 200;
+/// The most lanes (boolean inputs and all outputs, and the preset).
+const LANES: usize = 10;
+
+/// Which part of the trace to draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Window {
+    /// Draw from this time (ms) on; the state at that time is the one the rows before it left.
+    pub from: Option<u64>,
+    /// Draw up to this time (ms); reading stops after it.
+    pub to: Option<u64>,
+}
+
+/// What a drawing took.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Rows read.
+    pub rows: u64,
+    /// Rows drawn (inside the window).
+    pub drawn: u64,
+    /// Whether every drawn row was drawn exactly (otherwise through buckets).
+    pub exact: bool,
+    /// The most samples or buckets held at once.
+    pub held: usize,
+}
+
+/// One row's lane values.
+#[derive(Clone, Copy, Debug)]
+struct Sample {
+    t: u64,
+    v: [i128; LANES],
+    /// Signed milliseconds per unit of the ramp while it runs (ET +1, BI minus its base).
+    ramp: Option<i64>,
+}
+
+/// The rows of one time bucket, per lane.
+#[derive(Clone, Copy, Debug)]
+struct Bucket {
+    first: [i128; LANES],
+    last: [i128; LANES],
+    min: [(i128, u64); LANES],
+    max: [(i128, u64); LANES],
+}
+
+impl Bucket {
+    fn new(s: &Sample) -> Bucket {
+        Bucket {
+            first: s.v,
+            last: s.v,
+            min: s.v.map(|v| (v, s.t)),
+            max: s.v.map(|v| (v, s.t)),
+        }
+    }
+
+    fn add(&mut self, s: &Sample) {
+        self.last = s.v;
+        for k in 0..LANES {
+            if s.v[k] < self.min[k].0 {
+                self.min[k] = (s.v[k], s.t);
+            }
+            if s.v[k] > self.max[k].0 {
+                self.max[k] = (s.v[k], s.t);
+            }
+        }
+    }
+
+    fn merge(&mut self, later: &Bucket) {
+        self.last = later.last;
+        for k in 0..LANES {
+            if later.min[k].0 < self.min[k].0 {
+                self.min[k] = later.min[k];
+            }
+            if later.max[k].0 > self.max[k].0 {
+                self.max[k] = later.max[k];
+            }
+        }
+    }
+}
+
+/// Buckets of `width` ms from `origin`; `None` where no row fell.
+struct Buckets {
+    origin: u64,
+    width: u64,
+    slots: Vec<Option<Bucket>>,
+}
+
+impl Buckets {
+    fn new(origin: u64, span: u64) -> Buckets {
+        let mut width = 1u64;
+        while span / width >= COLUMNS as u64 {
+            width *= 2;
+        }
+        Buckets {
+            origin,
+            width,
+            slots: vec![None; 2 * COLUMNS],
+        }
+    }
+
+    /// Merges neighbours in pairs: the width doubles.
+    fn halve(&mut self) {
+        let n = self.slots.len();
+        for i in 0..n / 2 {
+            let (a, b) = (self.slots[2 * i], self.slots[2 * i + 1]);
+            self.slots[i] = match (a, b) {
+                (Some(mut a), Some(b)) => {
+                    a.merge(&b);
+                    Some(a)
+                }
+                (a, None) => a,
+                (None, b) => b,
+            };
+        }
+        for slot in &mut self.slots[n / 2..] {
+            *slot = None;
+        }
+        self.width = self.width.saturating_mul(2);
+    }
+
+    fn add(&mut self, s: &Sample) {
+        while (s.t - self.origin) / self.width >= self.slots.len() as u64 {
+            self.halve();
+        }
+        let i = ((s.t - self.origin) / self.width) as usize;
+        match &mut self.slots[i] {
+            Some(b) => b.add(s),
+            slot => *slot = Some(Bucket::new(s)),
+        }
+    }
+}
+
+/// A lane: what it draws.
+#[derive(Clone, Debug)]
+struct Lane {
+    name: &'static str,
+    kind: LaneKind,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LaneKind {
+    Input(u32),
+    BoolOutput(usize),
+    Ramp(usize),
+}
+
+/// The diagram under construction.
+struct Diagram {
+    window: Window,
+    columns: Option<Columns>,
+    lanes: Vec<Lane>,
+    /// The lane index of the preset (after the signal lanes).
+    preset_lane: usize,
+    exact: Vec<Sample>,
+    buckets: Option<Buckets>,
+    /// The last row before the window: its values hold at the window's start.
+    before: Option<Sample>,
+    first_t: Option<u64>,
+    last_t: u64,
+    stats: Stats,
+}
+
+impl Diagram {
+    fn sample(&self, o: &Observation) -> Sample {
+        let mut v = [0i128; LANES];
+        for (k, lane) in self.lanes.iter().enumerate() {
+            v[k] = match lane.kind {
+                LaneKind::Input(bit) => i128::from(o.signals.0 & bit != 0),
+                LaneKind::BoolOutput(i) | LaneKind::Ramp(i) => match o.outputs.as_slice()[i] {
+                    Value::Bool(b) => i128::from(b),
+                    Value::Int(x) => x,
+                    Value::Word(w) => i128::from(w),
+                },
+            };
+        }
+        v[self.preset_lane] = o.preset;
+        // ET counts up one per ms; BI counts down one per base.
+        let ramp = o
+            .ramp
+            .map(|ms| match self.columns.as_ref().map(|c| c.block.family()) {
+                Some(plc_timers::catalog::Family::S5Timer) => -(ms as i64),
+                _ => ms as i64,
+            });
+        Sample { t: o.t, v, ramp }
+    }
+
+    fn push(&mut self, s: Sample) {
+        self.first_t.get_or_insert(s.t);
+        self.last_t = s.t;
+        self.stats.drawn += 1;
+        match &mut self.buckets {
+            Some(b) => b.add(&s),
+            None if self.exact.len() < EXACT_ROWS => self.exact.push(s),
+            None => {
+                let origin = self.window.from.unwrap_or(self.exact[0].t);
+                let span = self.window.to.map_or(s.t - origin, |to| to - origin);
+                let mut b = Buckets::new(origin, span);
+                for e in self.exact.drain(..) {
+                    b.add(&e);
+                }
+                b.add(&s);
+                self.buckets = Some(b);
+                self.exact = Vec::new();
+            }
+        }
+        let held = self.exact.len() + self.buckets.as_ref().map_or(0, |b| b.slots.len());
+        self.stats.held = self.stats.held.max(held);
+    }
+}
+
+impl Observer for Diagram {
+    fn start(&mut self, columns: &Columns) -> Result<(), Error> {
+        for &(name, bit) in &columns.inputs {
+            self.lanes.push(Lane {
+                name,
+                kind: LaneKind::Input(bit),
+            });
+        }
+        for (i, port) in columns.block.outputs().iter().enumerate() {
+            let kind = match port.kind {
+                ValueKind::Bool => LaneKind::BoolOutput(i),
+                ValueKind::Int => LaneKind::Ramp(i),
+                _ => continue,
+            };
+            self.lanes.push(Lane {
+                name: port.name,
+                kind,
+            });
+        }
+        self.preset_lane = self.lanes.len();
+        self.columns = Some(columns.clone());
+        Ok(())
+    }
+
+    fn step(&mut self, o: &Observation) -> Result<bool, Error> {
+        self.stats.rows += 1;
+        let s = self.sample(o);
+        if let Some(to) = self.window.to {
+            if o.t > to {
+                return Ok(false);
+            }
+        }
+        match self.window.from {
+            Some(from) if o.t < from => {
+                self.before = Some(s);
+                return Ok(true);
+            }
+            Some(from) => {
+                if let Some(mut b) = self.before.take() {
+                    if o.t > from {
+                        b.t = from;
+                        self.push(b);
+                    }
+                }
+            }
+            None => {}
+        }
+        self.push(s);
+        Ok(true)
+    }
+}
+
+/// Draws the trace read from `input` through the block of `spec` as an SVG to `out`.
+pub fn svg<R: Read, W: Write>(
+    spec: BlockSpec,
+    presets: &[PresetOption<'_>],
+    input: R,
+    window: Window,
+    mut out: W,
+) -> Result<Stats, Error> {
+    let mut d = Diagram {
+        window,
+        columns: None,
+        lanes: Vec::new(),
+        preset_lane: 0,
+        exact: Vec::new(),
+        buckets: None,
+        before: None,
+        first_t: None,
+        last_t: 0,
+        stats: Stats::default(),
+    };
+    observe(spec, presets, input, &mut d)?;
+    // A window past the trace's end still shows the state the trace left.
+    if d.first_t.is_none() {
+        if let Some(b) = d.before.take() {
+            d.push(b);
+        }
+    }
+    d.stats.exact = d.buckets.is_none();
+    let text = render(&d);
+    out.write_all(text.as_bytes())?;
+    out.flush()?;
+    Ok(d.stats)
+}
 
 fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
@@ -26,25 +333,9 @@ fn escape(text: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// The value a preset marks on the ramp of `output`: PT in ms on ET, TV units on BI, PV on CV.
-fn preset_mark(output: &str, preset: &str) -> Option<i128> {
-    match output {
-        "ET" => preset
-            .parse::<Time>()
-            .ok()
-            .map(|t| i128::from(t.as_millis().max(0))),
-        "BI" => preset.parse::<S5Time>().ok().map(|t| i128::from(t.units())),
-        "CV" => {
-            let digits = preset.trim_start_matches(['C', 'c', '#']);
-            digits.parse::<i128>().ok()
-        }
-        _ => None,
-    }
-}
-
-/// A "nice" step (1, 2 or 5 x 10^k) giving at most about 10 ticks over `span`.
-fn tick_step(span: f64) -> f64 {
-    let raw = (span / 10.0).max(1.0);
+/// A "nice" step (1, 2 or 5 x 10^k) giving at most about `n` ticks over `span`.
+fn tick_step(span: f64, n: f64) -> f64 {
+    let raw = (span / n).max(1.0);
     let magnitude = 10f64.powf(raw.log10().floor());
     [1.0, 2.0, 5.0, 10.0]
         .into_iter()
@@ -53,36 +344,125 @@ fn tick_step(span: f64) -> f64 {
         .unwrap_or(raw)
 }
 
-/// Renders `rec` as an SVG document.
-pub fn svg(rec: &Recording) -> String {
-    let ramps: Vec<&(&str, Vec<Value>)> = rec
-        .outputs
+/// The points of lane `k` (value `v` mapped by `y`), drawn exactly from the samples.
+fn exact_points(
+    samples: &[Sample],
+    k: usize,
+    ramp: bool,
+    x: &dyn Fn(f64) -> f64,
+    y: &dyn Fn(i128) -> f64,
+    t_end: f64,
+) -> String {
+    let mut pts = String::new();
+    let mut previous = (f64::NAN, f64::NAN);
+    let mut point = |t: f64, v: i128| {
+        let p = ((x(t) * 10.0).round() / 10.0, (y(v) * 10.0).round() / 10.0);
+        if p != previous {
+            let _ = write!(pts, "{:.1},{:.1} ", p.0, p.1);
+            previous = p;
+        }
+    };
+    for (i, s) in samples.iter().enumerate() {
+        if let Some(p) = i.checked_sub(1).map(|j| &samples[j]) {
+            let (dt, dv) = ((s.t - p.t) as f64, s.v[k] - p.v[k]);
+            match p.ramp.filter(|_| ramp) {
+                // The value runs with time in its direction: a ramp, then flat once reached.
+                // One unit of slack: S5 ticks fall on multiples of the base, not at the row.
+                Some(rate) if dv != 0 && (dv > 0) == (rate > 0) => {
+                    let unit = rate.unsigned_abs() as f64;
+                    let need = (dv.unsigned_abs() as f64) * unit;
+                    if need <= dt + unit {
+                        point((p.t as f64 + need).min(s.t as f64), s.v[k]);
+                    } else {
+                        point(p.t as f64, p.v[k]);
+                        point(s.t as f64, p.v[k]);
+                    }
+                }
+                _ => point(s.t as f64, p.v[k]),
+            }
+        }
+        point(s.t as f64, s.v[k]);
+    }
+    if let Some(last) = samples.last() {
+        point(t_end, last.v[k]);
+    }
+    pts.trim_end().to_string()
+}
+
+/// The points of lane `k` drawn from buckets: per bucket the first value at its start, the
+/// extremes in the order they occurred, the last value; booleans as steps.
+fn bucket_points(
+    b: &Buckets,
+    k: usize,
+    ramp: bool,
+    x: &dyn Fn(f64) -> f64,
+    y: &dyn Fn(i128) -> f64,
+    t_end: f64,
+) -> String {
+    let mut pts = String::new();
+    let mut previous = (f64::NAN, f64::NAN);
+    let mut point = |t: f64, v: i128| {
+        let p = ((x(t) * 10.0).round() / 10.0, (y(v) * 10.0).round() / 10.0);
+        if p != previous {
+            let _ = write!(pts, "{:.1},{:.1} ", p.0, p.1);
+            previous = p;
+        }
+    };
+    let mut prev: Option<i128> = None;
+    for (i, slot) in b.slots.iter().enumerate() {
+        let Some(bucket) = slot else { continue };
+        let start = (b.origin + i as u64 * b.width) as f64;
+        let end = (start + b.width as f64).min(t_end);
+        if let Some(p) = prev {
+            point(start, p);
+        }
+        let (first, last) = (bucket.first[k], bucket.last[k]);
+        let (min, max) = (bucket.min[k], bucket.max[k]);
+        let mut extremes = [min, max];
+        extremes.sort_by_key(|e| e.1);
+        if ramp {
+            point(start, first);
+            let mid = (start + end) / 2.0;
+            for (v, _) in extremes {
+                if v != first && v != last {
+                    point(mid, v);
+                }
+            }
+            point(end, last);
+        } else {
+            point(start, first);
+            for (v, _) in extremes {
+                point(start, v);
+            }
+            point(start, last);
+            point(end, last);
+        }
+        prev = Some(last);
+    }
+    pts.trim_end().to_string()
+}
+
+fn render(d: &Diagram) -> String {
+    let Some(columns) = &d.columns else {
+        return String::new();
+    };
+    let ramps = d
+        .lanes
         .iter()
-        .filter(|(_, v)| matches!(v.first(), Some(Value::Int(_))))
-        .collect();
-    let bools: Vec<(&str, Vec<bool>)> = rec
-        .inputs
-        .iter()
-        .map(|(n, v)| (*n, v.clone()))
-        .chain(
-            rec.outputs
-                .iter()
-                .filter(|&(_n, v)| matches!(v.first(), Some(Value::Bool(_))))
-                .map(|(n, v)| {
-                    (
-                        *n,
-                        v.iter().map(|x| matches!(x, Value::Bool(true))).collect(),
-                    )
-                }),
-        )
-        .collect();
-    let height = TOP + bools.len() as f64 * BOOL_LANE + ramps.len() as f64 * VALUE_LANE + AXIS;
-    let t0 = rec.time.first().copied().unwrap_or(0) as f64;
-    let last = rec.time.last().copied().unwrap_or(0) as f64;
+        .filter(|l| matches!(l.kind, LaneKind::Ramp(_)))
+        .count();
+    let bools = d.lanes.len() - ramps;
+    let height = TOP + bools as f64 * BOOL_LANE + ramps as f64 * VALUE_LANE + AXIS;
+    let t0 = d.window.from.or(d.first_t).unwrap_or(0) as f64;
+    let last = d.window.to.map_or(d.last_t as f64, |t| t as f64).max(t0);
     let span = (last - t0).max(1.0);
-    let t_end = last + (span * 0.08).max(1.0);
+    let t_end = if d.window.to.is_some() {
+        last
+    } else {
+        last + (span * 0.08).max(1.0)
+    };
     let plot = WIDTH - LEFT - RIGHT;
-    let x = |t: f64| LEFT + (t - t0) / (t_end - t0) * plot;
+    let x = move |t: f64| LEFT + (t - t0) / (t_end - t0) * plot;
     let mut s = String::new();
     let _ = write!(
         s,
@@ -90,110 +470,128 @@ pub fn svg(rec: &Recording) -> String {
          viewBox=\"0 0 {WIDTH} {height}\" font-family=\"sans-serif\" font-size=\"12\">\n\
          <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
     );
-    let title = match &rec.preset {
-        Some((name, value)) => format!("{}, {name} = {value}", rec.block),
-        None => String::from(rec.block),
+    let presets: Vec<i128> = if d.buckets.is_some() {
+        let b = d.buckets.as_ref().map(|b| b.slots.iter().flatten());
+        b.into_iter()
+            .flatten()
+            .flat_map(|k| [k.min[d.preset_lane].0, k.max[d.preset_lane].0])
+            .collect()
+    } else {
+        d.exact.iter().map(|e| e.v[d.preset_lane]).collect()
+    };
+    let constant_preset = presets.windows(2).all(|w| w[0] == w[1]);
+    let title = match (columns.preset, presets.first()) {
+        (Some(name), Some(p)) if constant_preset => format!("{}, {name} = {p}", columns.block),
+        (Some(name), Some(_)) => format!("{}, {name} changes", columns.block),
+        _ => columns.block.name().to_string(),
     };
     let _ = writeln!(
         s,
         "<text x=\"{LEFT}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
         escape(&title)
     );
-    // Light vertical lines at every execution.
-    for &t in &rec.time {
-        let xt = x(t as f64);
-        let _ = writeln!(
-            s,
-            "<line class=\"row\" x1=\"{xt:.1}\" y1=\"{TOP}\" x2=\"{xt:.1}\" y2=\"{:.1}\" stroke=\"#eee\"/>",
-            height - AXIS
-        );
-    }
-    let mut y = TOP;
-    let step_points = |values: &[f64], lo: f64, hi: f64| -> String {
-        let mut pts = String::new();
-        let mut prev: Option<f64> = None;
-        for (t, v) in rec.time.iter().zip(values) {
-            let vy = hi - (hi - lo) * v;
-            let xt = x(*t as f64);
-            if let Some(p) = prev {
-                let _ = write!(pts, "{xt:.1},{p:.1} ");
-            }
-            let _ = write!(pts, "{xt:.1},{vy:.1} ");
-            prev = Some(vy);
-        }
-        if let Some(p) = prev {
-            let _ = write!(pts, "{:.1},{p:.1}", x(t_end));
-        }
-        pts
-    };
-    for (name, values) in &bools {
-        let lo = y + 6.0;
-        let hi = y + BOOL_LANE - 8.0;
-        let v: Vec<f64> = values.iter().map(|&b| f64::from(u8::from(b))).collect();
-        let color = if rec.outputs.iter().any(|(n, _)| n == name) {
-            "#c0392b"
-        } else {
-            "#1f4e79"
-        };
-        let _ = writeln!(
-            s,
-            "<text x=\"8\" y=\"{:.1}\">{}</text>",
-            hi - 4.0,
-            escape(name)
-        );
-        let _ = writeln!(
-            s,
-            "<polyline class=\"signal\" data-name=\"{}\" points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>",
-            escape(name),
-            step_points(&v, lo, hi)
-        );
-        y += BOOL_LANE;
-    }
-    for (name, values) in &ramps {
-        let ints: Vec<i128> = values
-            .iter()
-            .map(|v| if let Value::Int(i) = v { *i } else { 0 })
-            .collect();
-        let mark = rec.preset.as_ref().and_then(|(_, p)| preset_mark(name, p));
-        let max = ints.iter().copied().chain(mark).max().unwrap_or(1).max(1) as f64;
-        let min = ints.iter().copied().min().unwrap_or(0).min(0) as f64;
-        let lo = y + 10.0;
-        let hi = y + VALUE_LANE - 12.0;
-        let norm: Vec<f64> = ints
-            .iter()
-            .map(|&i| (i as f64 - min) / (max - min))
-            .collect();
-        let _ = writeln!(
-            s,
-            "<text x=\"8\" y=\"{:.1}\">{}</text>",
-            (lo + hi) / 2.0,
-            escape(name)
-        );
-        let _ = writeln!(
-            s,
-            "<text x=\"8\" y=\"{:.1}\" fill=\"#888\">{}</text>",
-            lo + 4.0,
-            max as i128
-        );
-        if let Some(m) = mark {
-            let my = hi - (hi - lo) * ((m as f64 - min) / (max - min));
-            let label = rec.preset.as_ref().map(|(n, _)| *n).unwrap_or("");
+    if d.buckets.is_none() && d.exact.len() <= ROW_LINES {
+        for e in &d.exact {
+            let xt = x(e.t as f64);
             let _ = writeln!(
                 s,
-                "<line class=\"preset\" x1=\"{LEFT}\" y1=\"{my:.1}\" x2=\"{:.1}\" y2=\"{my:.1}\" stroke=\"#888\" stroke-dasharray=\"5,4\"/>\n\
-                 <text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\" text-anchor=\"end\">{label} = {m}</text>",
-                WIDTH - RIGHT,
-                WIDTH - RIGHT,
-                my - 3.0
+                "<line class=\"row\" x1=\"{xt:.1}\" y1=\"{TOP}\" x2=\"{xt:.1}\" y2=\"{:.1}\" stroke=\"#eee\"/>",
+                height - AXIS
             );
         }
-        let _ = writeln!(
-            s,
-            "<polyline class=\"ramp\" data-name=\"{}\" points=\"{}\" fill=\"none\" stroke=\"#27ae60\" stroke-width=\"2\"/>",
-            escape(name),
-            step_points(&norm, lo, hi)
-        );
-        y += VALUE_LANE;
+    }
+    let points = |k: usize, ramp: bool, y: &dyn Fn(i128) -> f64| match &d.buckets {
+        Some(b) => bucket_points(b, k, ramp, &x, y, t_end),
+        None => exact_points(&d.exact, k, ramp, &x, y, t_end),
+    };
+    let extent = |k: usize| -> (i128, i128) {
+        match &d.buckets {
+            Some(b) => b.slots.iter().flatten().fold((0, 1), |(lo, hi), bk| {
+                (lo.min(bk.min[k].0), hi.max(bk.max[k].0))
+            }),
+            None => d
+                .exact
+                .iter()
+                .fold((0, 1), |(lo, hi), e| (lo.min(e.v[k]), hi.max(e.v[k]))),
+        }
+    };
+    let mut y = TOP;
+    for (k, lane) in d.lanes.iter().enumerate() {
+        let name = escape(lane.name);
+        match lane.kind {
+            LaneKind::Input(_) | LaneKind::BoolOutput(_) => {
+                let (lo, hi) = (y + BOOL_LANE - 8.0, y + 6.0);
+                let color = if matches!(lane.kind, LaneKind::Input(_)) {
+                    "#1f4e79"
+                } else {
+                    "#c0392b"
+                };
+                let yv = move |v: i128| if v != 0 { hi } else { lo };
+                let _ = writeln!(s, "<text x=\"8\" y=\"{:.1}\">{name}</text>", lo - 4.0);
+                let _ = writeln!(
+                    s,
+                    "<polyline class=\"signal\" data-name=\"{name}\" points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>",
+                    points(k, false, &yv)
+                );
+                y += BOOL_LANE;
+            }
+            LaneKind::Ramp(_) => {
+                let (lo_v, hi_v) = extent(k);
+                let (plo, phi) = extent(d.preset_lane);
+                let (lo_v, hi_v) = (lo_v.min(plo), hi_v.max(phi).max(lo_v.min(plo) + 1));
+                let (lo, hi) = (y + VALUE_LANE - 14.0, y + 12.0);
+                let scale =
+                    move |v: i128| lo - (lo - hi) * ((v - lo_v) as f64 / (hi_v - lo_v) as f64);
+                let _ = writeln!(
+                    s,
+                    "<text x=\"8\" y=\"{:.1}\" font-weight=\"bold\">{name}</text>",
+                    (lo + hi) / 2.0
+                );
+                // The value axis: a vertical line with nice ticks and labels.
+                let _ = writeln!(
+                    s,
+                    "<line class=\"value-axis\" x1=\"{LEFT}\" y1=\"{hi:.1}\" x2=\"{LEFT}\" y2=\"{lo:.1}\" stroke=\"black\"/>"
+                );
+                let step = tick_step((hi_v - lo_v) as f64, 4.0) as i128;
+                let mut v = lo_v.div_euclid(step.max(1)) * step.max(1);
+                while v <= hi_v {
+                    if v >= lo_v {
+                        let yv = scale(v);
+                        let _ = writeln!(
+                            s,
+                            "<line x1=\"{:.1}\" y1=\"{yv:.1}\" x2=\"{LEFT}\" y2=\"{yv:.1}\" stroke=\"black\"/>\
+                             <text class=\"tick\" x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" fill=\"#555\">{v}</text>",
+                            LEFT - 4.0,
+                            LEFT - 6.0,
+                            yv + 4.0
+                        );
+                    }
+                    v += step.max(1);
+                }
+                if let Some(pname) = columns.preset {
+                    let label = match presets.last() {
+                        Some(p) if constant_preset => format!("{pname} = {p}"),
+                        _ => pname.to_string(),
+                    };
+                    let py = presets.last().map_or(lo, |p| scale(*p));
+                    let _ = writeln!(
+                        s,
+                        "<polyline class=\"preset\" data-name=\"{pname}\" points=\"{}\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"5,4\"/>\n\
+                         <text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\" text-anchor=\"end\">{}</text>",
+                        points(d.preset_lane, false, &scale),
+                        WIDTH - RIGHT,
+                        py - 4.0,
+                        escape(&label)
+                    );
+                }
+                let _ = writeln!(
+                    s,
+                    "<polyline class=\"ramp\" data-name=\"{name}\" points=\"{}\" fill=\"none\" stroke=\"#27ae60\" stroke-width=\"2\"/>",
+                    points(k, true, &scale)
+                );
+                y += VALUE_LANE;
+            }
+        }
     }
     // The time axis.
     let _ = writeln!(
@@ -201,7 +599,7 @@ pub fn svg(rec: &Recording) -> String {
         "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{:.1}\" y2=\"{y:.1}\" stroke=\"black\"/>",
         WIDTH - RIGHT
     );
-    let step = tick_step(t_end - t0);
+    let step = tick_step(t_end - t0, 8.0);
     let mut t = (t0 / step).ceil() * step;
     while t <= t_end {
         let xt = x(t);
@@ -215,12 +613,12 @@ pub fn svg(rec: &Recording) -> String {
         );
         t += step;
     }
-    let unit = if rec.timed { "t [ms]" } else { "execution" };
+    let unit = if columns.timed { "t [ms]" } else { "row" };
     let _ = writeln!(
         s,
         "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\">{unit}</text>",
         WIDTH - RIGHT,
-        y + 34.0
+        y + 36.0
     );
     s.push_str("</svg>\n");
     s

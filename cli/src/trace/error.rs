@@ -1,29 +1,34 @@
-//! Errors of the trace machinery, located by line and column.
+//! Errors that say what was wrong, what is allowed, and where: the line and column of the trace,
+//! a command-line option, or the command itself.
 
 use std::fmt;
-use std::string::String;
 
-/// Where in the input an error was found.
+/// The longest part of a cell that a message shows, in characters; a longer cell is cut there
+/// and ends with `…`.
+pub const SHOWN_CHARS: usize = 60;
+
+/// Where a problem is.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Location {
-    /// Not tied to the file (an unknown block name, a bad `--type`).
+    /// Not tied to the trace: an unknown block, a bad `--type`, a file that cannot be opened.
     Command,
-    /// A command-line option such as `--tv`.
+    /// A command-line option such as `--tv` (without the dashes).
     Option(&'static str),
-    /// A line of the CSV file (1-based), the whole line.
+    /// A whole line of the trace (1-based; the header is the first line that is not blank or a
+    /// comment).
     Line(u64),
-    /// A cell: 1-based line, 1-based column and the column's name as the header gives it.
+    /// A cell: 1-based line, 1-based column and the column's name as the header writes it.
     Cell {
-        /// The line, 1-based (the header is line 1).
+        /// The line, 1-based.
         line: u64,
-        /// The column, 1-based.
+        /// The column (field number), 1-based.
         column: usize,
-        /// The column's name as written in the header.
+        /// The column's name as written in the header (`field N` while the header is read).
         name: String,
     },
 }
 
-/// An error in a trace or in how the block was asked for: what was wrong and where.
+/// Bad input: what was wrong and what is allowed, and where.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TraceError {
     /// Where the problem is.
@@ -33,11 +38,24 @@ pub struct TraceError {
 }
 
 impl TraceError {
-    pub(crate) fn new(location: Location, message: impl Into<String>) -> TraceError {
+    /// An error at `location`.
+    pub fn new(location: Location, message: impl Into<String>) -> TraceError {
         TraceError {
             location,
             message: message.into(),
         }
+    }
+
+    /// An error in the cell at `line`, `column` (1-based) called `name`.
+    pub fn cell(line: u64, column: usize, name: &str, message: impl Into<String>) -> TraceError {
+        TraceError::new(
+            Location::Cell {
+                line,
+                column,
+                name: show(name.as_bytes()),
+            },
+            message,
+        )
     }
 }
 
@@ -55,3 +73,88 @@ impl fmt::Display for TraceError {
 }
 
 impl std::error::Error for TraceError {}
+
+/// A cell's text as a message shows it: invalid UTF-8 replaced by `\u{FFFD}`, control
+/// characters escaped, at most [`SHOWN_CHARS`] characters and then `…`.
+pub fn show(bytes: &[u8]) -> String {
+    // Never decode more than a small prefix: a 10 MB cell must not make a 10 MB message.
+    let prefix = &bytes[..bytes.len().min(SHOWN_CHARS * 4 + 4)];
+    let text = String::from_utf8_lossy(prefix);
+    let mut out = String::new();
+    for (chars, c) in text.chars().enumerate() {
+        if chars == SHOWN_CHARS {
+            out.push('…');
+            return out;
+        }
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    if prefix.len() < bytes.len() {
+        out.push('…');
+    }
+    out
+}
+
+/// An error of a command that reads a trace: bad input, or the output could not be written.
+#[derive(Debug)]
+pub enum Error {
+    /// The trace or the options are bad input.
+    Input(TraceError),
+    /// Writing the output failed (a closed pipe, a full disk).
+    Output(std::io::Error),
+}
+
+impl From<Box<TraceError>> for TraceError {
+    fn from(e: Box<TraceError>) -> TraceError {
+        *e
+    }
+}
+
+impl From<Box<TraceError>> for Error {
+    fn from(e: Box<TraceError>) -> Error {
+        Error::Input(*e)
+    }
+}
+
+impl From<TraceError> for Error {
+    fn from(e: TraceError) -> Error {
+        Error::Input(e)
+    }
+}
+
+impl From<std::io::Error> for Error {
+    fn from(e: std::io::Error) -> Error {
+        Error::Output(e)
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Input(e) => e.fmt(f),
+            Error::Output(e) => write!(f, "cannot write the output: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn show_cuts_long_cells_and_escapes_controls() {
+        assert_eq!(show(b"abc"), "abc");
+        let long = vec![b'x'; 10_000_000];
+        let s = show(&long);
+        assert_eq!(s.chars().count(), SHOWN_CHARS + 1);
+        assert!(s.ends_with('…'));
+        assert_eq!(show(&[b'x'; SHOWN_CHARS]), "x".repeat(SHOWN_CHARS));
+        assert_eq!(show(b"a\tb"), "a\\tb");
+        assert_eq!(show(b"\xff"), "\u{FFFD}");
+    }
+}

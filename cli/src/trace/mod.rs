@@ -1,22 +1,26 @@
-//! CSV traces (feature `cli`): the command-line contract of `shared/trace-format.md`.
+//! CSV traces through the blocks of the catalog: the contract of `spec/cli.md`.
 //!
-//! - [`block`]: the [`TraceBlock`] interface each family implements.
-//! - [`registry`]: block names, aliases and options.
-//! - [`runner`]: [`run`] (reference outputs for a trace) and [`check`] (compare another
-//!   implementation's outputs with the reference).
+//! - [`reader`]: a strict CSV reader that knows each record's line.
+//! - [`family`]: the generic adapter between a row and a block family, and [`dispatch`].
+//! - [`engine`]: the header resolved against the catalog; [`run`], [`check`], [`observe`].
+//! - [`rules`]: the requirement texts that `check` quotes.
+//! - [`diagram`]: timing diagrams (SVG), streamed; [`vcd`]: VCD export.
+//! - [`examples`]: the example traces of `examples/traces/`; [`vectors`]: test vectors.
 //! - [`error`]: errors that name the line and column.
-//! - [`diagram`]: timing diagrams (SVG) of a recorded trace.
-//! - [`vectors`]: test vectors with reference outputs for other implementations.
 
-pub mod block;
-mod blocks;
 pub mod diagram;
+pub mod engine;
 pub mod error;
-pub mod registry;
-pub mod runner;
+pub mod examples;
+pub mod family;
+pub mod reader;
+pub mod rules;
+pub mod vcd;
 pub mod vectors;
 
-pub use block::{CellError, Implementation, Input, InputKind, Row, TraceBlock, Value};
-pub use error::{Location, TraceError};
-pub use registry::{lookup, BlockOptions, BLOCK_NAMES};
-pub use runner::{check, record, run, CheckReport, Difference, PresetOption, Recording};
+pub use engine::{
+    check, observe, run, CheckReport, Columns, ContextRow, Difference, Observation, Observer,
+    PresetOption,
+};
+pub use error::{Error, Location, TraceError};
+pub use family::{dispatch, BlockSpec, Implementation, IntType, Signals, Value, Why};

@@ -1,166 +1,115 @@
-//! Test vectors for other implementations: for every block, CSV traces with the reference
-//! outputs, in the contract's format and self-contained (the preset is a column), so that
-//! `plc-timers check BLOCK FILE` replays them.
+//! Test vectors for other implementations: for every block of the catalog (IEC counters: for
+//! every integer type), self-contained CSV traces (the preset is a column) with the reference
+//! outputs, so that `plc-timers check BLOCK FILE` replays them.
 //!
-//! Each block gets its shipped example trace and [`TRACES_PER_BLOCK`] generated traces: random
-//! inputs whose bits keep their value with probability 3/4 (clustered edges), presets from a
-//! list of edge values (0, one unit, negative for IEC timers, the type's limits for counters),
-//! and time steps drawn from the block's interesting intervals (0, 1 ms, one tick or the preset
-//! and one either side, a long gap; IEC timers start 50 ms before the 32-bit clock wraps).
+//! Per block: the shipped example (`example.csv`), [`TRACES_PER_BLOCK`] random traces
+//! (`random-NN.csv`: edges clustered, presets at edge values, time steps around ticks and
+//! presets, IEC timers across the 2^32 ms clock wrap), and traces aimed at the rules ports
+//! most often break:
+//! - `preset-change.csv` (every block): TV/PT/PV change mid-run; the IEC timers latch PT while
+//!   running (IEC-PT-LATCH-01), where every peer runtime re-reads it.
+//! - `long-gaps.csv` (IEC timers): gaps between calls up to and past 2^31 ms and 2^32 ms
+//!   (IEC-WRAP-01).
+//! - `limits.csv` (counters): counting into the type's limits (CNT-SAT-01, SC-SAT-01); CTU
+//!   has no load, so it reaches the top of the 8-bit types by counting.
+//! - `simultaneous.csv` (every block): every combination of the boolean inputs rising
+//!   together, from several states (counters: CV 0, at the type's limits and at PV; S5
+//!   counters: CV 0, 5 and 999).
+//! - `fr.csv` (blocks with FR): FR edges with S (or CU, CD) high and low, running and stopped.
 
-use std::format;
-use std::string::{String, ToString};
-use std::vec;
-use std::vec::Vec;
+use plc_timers::catalog::{Block, Family, PresetKind, ValueKind};
 
-use super::block::InputKind;
-use super::registry::{lookup, BlockOptions};
-use super::runner::run;
+use super::engine::{run, TIME_COLUMN};
+use super::error::TraceError;
+use super::examples;
+use super::family::{input_bit, BlockSpec, IntType};
 
-/// Generated traces per block (besides the example).
+/// Random traces per block (besides the example and the aimed traces).
 pub const TRACES_PER_BLOCK: usize = 20;
-/// Rows per generated trace.
+/// Rows per random trace.
 pub const ROWS: usize = 40;
+/// The seed of the random traces.
+const SEED: u64 = 0x5EED_0000;
 
 /// One vector file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Vector {
-    /// The directory (block name, with the integer type for IEC counters, e.g. `CTUD-SINT`).
+    /// The directory: the block's name, with the integer type for IEC counters (`CTUD-SINT`).
     pub dir: String,
     /// The file name.
     pub file: String,
-    /// The block name for `plc-timers check`.
-    pub block: &'static str,
-    /// `--type` for `check`, for IEC counters.
-    pub int_type: Option<&'static str>,
-    /// The CSV text: inputs, preset column, outputs.
+    /// The block (and `--type`) for `plc-timers check`.
+    pub spec: BlockSpec,
+    /// The CSV text: inputs, preset column, reference outputs.
     pub csv: String,
 }
 
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-
-    fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
-        &items[(self.next() % items.len() as u64) as usize]
+impl Vector {
+    /// The `plc-timers check` command that replays it, from the vectors' directory.
+    pub fn check_command(&self) -> String {
+        let ty = match self.spec.block.family() {
+            Family::IecCounter => format!(" --type {}", self.spec.int_type.name()),
+            _ => String::new(),
+        };
+        format!(
+            "plc-timers check {}{ty} {}/{}",
+            self.spec.block, self.dir, self.file
+        )
     }
 }
 
-const EXAMPLES: &[(&str, &str, &str, &str)] = &[
-    (
-        "S_PULSE",
-        "tv",
-        "S5T#50MS",
-        include_str!("../../../examples/traces/s_pulse.csv"),
-    ),
-    (
-        "S_PEXT",
-        "tv",
-        "S5T#50MS",
-        include_str!("../../../examples/traces/s_pext.csv"),
-    ),
-    (
-        "S_ODT",
-        "tv",
-        "S5T#50MS",
-        include_str!("../../../examples/traces/s_odt.csv"),
-    ),
-    (
-        "S_ODTS",
-        "tv",
-        "S5T#50MS",
-        include_str!("../../../examples/traces/s_odts.csv"),
-    ),
-    (
-        "S_OFFDT",
-        "tv",
-        "S5T#50MS",
-        include_str!("../../../examples/traces/s_offdt.csv"),
-    ),
-    (
-        "TP",
-        "pt",
-        "T#100ms",
-        include_str!("../../../examples/traces/tp.csv"),
-    ),
-    (
-        "TON",
-        "pt",
-        "T#500ms",
-        include_str!("../../../examples/traces/ton.csv"),
-    ),
-    (
-        "TOF",
-        "pt",
-        "T#200ms",
-        include_str!("../../../examples/traces/tof.csv"),
-    ),
-    (
-        "TONR",
-        "pt",
-        "T#300ms",
-        include_str!("../../../examples/traces/tonr.csv"),
-    ),
-    (
-        "CTU",
-        "pv",
-        "3",
-        include_str!("../../../examples/traces/ctu.csv"),
-    ),
-    (
-        "CTD",
-        "pv",
-        "2",
-        include_str!("../../../examples/traces/ctd.csv"),
-    ),
-    (
-        "CTUD",
-        "pv",
-        "4",
-        include_str!("../../../examples/traces/ctud.csv"),
-    ),
-    (
-        "S_CU",
-        "pv",
-        "C#998",
-        include_str!("../../../examples/traces/s_cu.csv"),
-    ),
-    (
-        "S_CD",
-        "pv",
-        "C#2",
-        include_str!("../../../examples/traces/s_cd.csv"),
-    ),
-    (
-        "S_CUD",
-        "pv",
-        "C#5",
-        include_str!("../../../examples/traces/s_cud.csv"),
-    ),
-];
+/// A trace under construction: rows of (t, input bits, preset text).
+struct Trace {
+    block: Block,
+    rows: Vec<(u64, u32, String)>,
+}
 
-const TYPES: [(&str, i128, i128); 8] = [
-    ("SINT", i8::MIN as i128, i8::MAX as i128),
-    ("INT", i16::MIN as i128, i16::MAX as i128),
-    ("DINT", i32::MIN as i128, i32::MAX as i128),
-    ("LINT", i64::MIN as i128, i64::MAX as i128),
-    ("USINT", 0, u8::MAX as i128),
-    ("UINT", 0, u16::MAX as i128),
-    ("UDINT", 0, u32::MAX as i128),
-    ("ULINT", 0, u64::MAX as i128),
-];
+impl Trace {
+    fn new(block: Block) -> Trace {
+        Trace {
+            block,
+            rows: Vec::new(),
+        }
+    }
 
-/// Presets and time steps for a block.
-fn presets_and_steps(block: &str, int_type: Option<(i128, i128)>) -> (Vec<String>, Vec<u64>) {
+    /// Adds a row with the inputs `names` at 1.
+    fn row(&mut self, t: u64, names: &[&str], preset: &str) {
+        let bits = names.iter().fold(0, |b, n| b | input_bit(self.block, n));
+        self.rows.push((t, bits, preset.to_string()));
+    }
+
+    fn text(&self) -> String {
+        let timed = self.block.requires_time();
+        let mut names: Vec<&str> = Vec::new();
+        if timed {
+            names.push(TIME_COLUMN);
+        }
+        names.extend(self.block.inputs().iter().map(|p| p.name));
+        let mut text = names.join(",");
+        text.push('\n');
+        for (t, bits, preset) in &self.rows {
+            let mut fields: Vec<String> = Vec::new();
+            if timed {
+                fields.push(t.to_string());
+            }
+            for (i, port) in self.block.inputs().iter().enumerate() {
+                fields.push(match port.kind {
+                    ValueKind::Bool => u8::from(bits >> i & 1 == 1).to_string(),
+                    _ => preset.clone(),
+                });
+            }
+            text.push_str(&fields.join(","));
+            text.push('\n');
+        }
+        text
+    }
+}
+
+/// Presets at edge values, and the time steps around ticks and presets, per preset kind.
+fn presets_and_steps(kind: PresetKind, int_type: IntType) -> (Vec<String>, Vec<u64>) {
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
-    match block {
-        "S_PULSE" | "S_PEXT" | "S_ODT" | "S_ODTS" | "S_OFFDT" => (
+    match kind {
+        PresetKind::S5Time => (
             s(&[
                 "S5T#0MS",
                 "W#16#0001",
@@ -171,16 +120,16 @@ fn presets_and_steps(block: &str, int_type: Option<(i128, i128)>) -> (Vec<String
             ]),
             vec![0, 1, 9, 10, 11, 20, 30, 100, 1_000, 2_000],
         ),
-        "TP" | "TON" | "TOF" | "TONR" => (
+        PresetKind::Time => (
             s(&["T#0MS", "-5", "T#1MS", "T#30MS", "T#100MS"]),
             vec![0, 1, 29, 30, 31, 50, 100, 5_000],
         ),
-        "S_CU" | "S_CD" | "S_CUD" => (
+        PresetKind::S5Count => (
             s(&["C#0", "C#1", "C#3", "C#998", "C#999", "W#16#0500"]),
             vec![1],
         ),
-        _ => {
-            let (min, max) = int_type.unwrap_or((i16::MIN as i128, i16::MAX as i128));
+        PresetKind::Integer => {
+            let (min, max) = int_type.limits();
             let pvs = [0, 1, 3, -1, min, max, max - 1, min + 1]
                 .into_iter()
                 .filter(|v| (min..=max).contains(v))
@@ -191,138 +140,432 @@ fn presets_and_steps(block: &str, int_type: Option<(i128, i128)>) -> (Vec<String
     }
 }
 
-fn generate(
-    block: &'static str,
-    int_type: Option<&'static str>,
-    seed: u64,
-) -> Result<Vec<Vector>, String> {
-    let options = BlockOptions {
-        int_type: int_type.map(String::from),
-        ..BlockOptions::default()
-    };
-    let probe = lookup(block, &options).map_err(|e| e.to_string())?;
-    let inputs = probe.inputs();
-    let timed = probe.requires_time();
-    let limits = int_type
-        .and_then(|t| TYPES.iter().find(|x| x.0 == t))
-        .map(|x| (x.1, x.2));
-    let (presets, steps) = presets_and_steps(block, limits);
-    let dir = match int_type {
-        Some(t) => format!("{block}-{t}"),
-        None => block.to_string(),
-    };
-    let mut rng = Rng(seed);
-    let mut out = Vec::new();
-    let reference = |text: &str| -> Result<String, String> {
-        let mut b = lookup(block, &options).map_err(|e| e.to_string())?;
-        let mut buf = Vec::new();
-        run(b.as_mut(), text.as_bytes(), &[], &mut buf).map_err(|e| e.to_string())?;
-        String::from_utf8(buf).map_err(|e| e.to_string())
-    };
-    // The example, with its preset as a column.
-    if let Some(&(_, _, value, text)) = EXAMPLES.iter().find(|e| e.0 == block) {
-        let mut with_preset = String::new();
-        let preset_name = inputs
-            .iter()
-            .find(|i| matches!(i.kind, InputKind::Preset { .. }))
-            .map(|i| i.name);
-        for line in text
-            .lines()
-            .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        {
-            let extra = if with_preset.is_empty() {
-                preset_name.unwrap_or("")
-            } else {
-                value
-            };
-            with_preset.push_str(&format!("{line},{extra}\n"));
-        }
-        if int_type.is_none() || int_type == Some("INT") {
-            out.push(Vector {
-                dir: dir.clone(),
-                file: "example.csv".into(),
-                block,
-                int_type,
-                csv: reference(&with_preset)?,
-            });
-        }
+/// The first time of a generated trace: IEC timers start 50 ms before the 32-bit clock wraps.
+fn start_time(kind: PresetKind) -> u64 {
+    if kind == PresetKind::Time {
+        (1 << 32) - 50
+    } else {
+        0
     }
-    for k in 0..TRACES_PER_BLOCK {
-        let mut header: Vec<&str> = Vec::new();
-        if timed {
-            header.push("t_ms");
-        }
-        header.extend(inputs.iter().map(|i| i.name));
-        let mut text = header.join(",");
-        text.push('\n');
-        let preset = rng.pick(&presets).clone();
-        // IEC timers start just before the 32-bit clock wraps.
-        let mut t: u64 = if block.starts_with('T') {
-            (1 << 32) - 50
-        } else {
-            0
-        };
-        let mut bits = 0u64;
-        for _ in 0..ROWS {
-            t += *rng.pick(&steps);
-            bits ^= rng.next() & rng.next();
-            let mut fields: Vec<String> = Vec::new();
-            if timed {
-                fields.push(t.to_string());
-            }
-            for (i, input) in inputs.iter().enumerate() {
-                fields.push(match input.kind {
-                    InputKind::Bool => {
-                        // Resets and loads are rarer than the counting and start signals.
-                        let rare = matches!(input.name, "R" | "LD" | "FR");
-                        let on = bits >> i & 1 != 0 && (!rare || rng.next() % 3 == 0);
-                        String::from(if on { "1" } else { "0" })
-                    }
-                    InputKind::Preset { .. } => preset.clone(),
-                });
-            }
-            text.push_str(&fields.join(","));
-            text.push('\n');
-        }
-        out.push(Vector {
-            dir: dir.clone(),
-            file: format!("random-{k:02}.csv"),
-            block,
-            int_type,
-            csv: reference(&text)?,
-        });
-    }
-    Ok(out)
 }
 
-/// Every vector: each block, and each integer type of the IEC counters.
-pub fn all() -> Result<Vec<Vector>, String> {
-    let mut v = Vec::new();
-    for (i, &(block, ..)) in EXAMPLES.iter().enumerate() {
-        if matches!(block, "CTU" | "CTD" | "CTUD") {
-            for (j, &(ty, ..)) in TYPES.iter().enumerate() {
-                v.extend(generate(
-                    block,
-                    Some(ty),
-                    0x5EED_0000 + (i * 16 + j) as u64 + 1,
-                )?);
+fn random(block: Block, kind: PresetKind, int_type: IntType, rng: &mut fastrand::Rng) -> Trace {
+    let (presets, steps) = presets_and_steps(kind, int_type);
+    let preset = presets[rng.usize(..presets.len())].clone();
+    let mut trace = Trace::new(block);
+    let mut t = start_time(kind);
+    let mut bits = 0u64;
+    for _ in 0..ROWS {
+        t += steps[rng.usize(..steps.len())];
+        bits ^= rng.u64(..) & rng.u64(..);
+        let mut on: Vec<&str> = Vec::new();
+        for (i, port) in block.inputs().iter().enumerate() {
+            // Resets, loads and enables are rarer than the counting and start signals.
+            let rare = matches!(port.name, "R" | "LD" | "FR");
+            if port.kind == ValueKind::Bool && bits >> i & 1 == 1 && (!rare || rng.u32(..3) == 0) {
+                on.push(port.name);
             }
+        }
+        trace.row(t, &on, &preset);
+    }
+    trace
+}
+
+/// The presets a trace changes between: [p0, p1, p2, p3].
+fn changing_presets(kind: PresetKind) -> [&'static str; 4] {
+    match kind {
+        PresetKind::S5Time => ["S5T#100MS", "S5T#50MS", "S5T#20MS", "S5T#200MS"],
+        PresetKind::Time => ["T#100MS", "T#50MS", "T#20MS", "T#200MS"],
+        PresetKind::S5Count => ["C#5", "C#2", "C#10", "C#1"],
+        PresetKind::Integer => ["5", "2", "10", "1"],
+    }
+}
+
+fn preset_change(block: Block, kind: PresetKind) -> Trace {
+    let p = changing_presets(kind);
+    let mut trace = Trace::new(block);
+    if block.requires_time() {
+        // The start input: S or IN; TONR's R resets at the end.
+        let start = if block.input_index("S").is_some() {
+            "S"
         } else {
-            v.extend(generate(block, None, 0x5EED_0000 + (i * 16) as u64 + 1)?);
+            "IN"
+        };
+        let t0 = start_time(kind);
+        let pattern: &[(u64, bool, usize)] = &[
+            (0, false, 0),
+            (10, true, 0),
+            (30, true, 1),
+            (60, true, 2),
+            (80, true, 3),
+            (109, true, 3),
+            (110, true, 3),
+            (120, true, 0),
+            (130, false, 0),
+            (140, false, 1),
+            (160, false, 2),
+            (200, false, 2),
+            (250, false, 3),
+            (300, true, 3),
+            (310, false, 3),
+            (320, false, 2),
+            (400, false, 2),
+            (500, true, 1),
+            (520, true, 3),
+            (560, true, 3),
+            (600, false, 0),
+            (700, false, 0),
+        ];
+        let started = [start];
+        for &(dt, on, k) in pattern {
+            trace.row(t0 + dt, if on { &started[..] } else { &[] }, p[k]);
+        }
+        trace.row(t0 + 800, &["R"], p[0]);
+    } else {
+        let pattern: &[(&[&str], usize)] = &[
+            (&["LD", "S"], 0),
+            (&[], 0),
+            (&["CU"], 0),
+            (&[], 0),
+            (&["CU"], 0),
+            (&[], 1),
+            (&["CD"], 1),
+            (&[], 2),
+            (&["CU"], 2),
+            (&[], 2),
+            (&["LD", "S"], 2),
+            (&[], 3),
+            (&["CD"], 3),
+            (&[], 3),
+            (&["CU"], 0),
+            (&["R"], 0),
+            (&[], 1),
+        ];
+        for (t, &(on, k)) in pattern.iter().enumerate() {
+            trace.row(t as u64, on, p[k]);
+        }
+    }
+    trace
+}
+
+fn long_gaps(block: Block) -> Trace {
+    let mut trace = Trace::new(block);
+    let mut t = 1_000u64;
+    for pt in ["T#10S", "T#24D_20H_31M_23S_647MS"] {
+        for gap in [
+            (1u64 << 31) - 1,
+            1 << 31,
+            (1 << 31) + 1,
+            (1 << 32) - 1,
+            1 << 32,
+            (1 << 32) + 1,
+            (1 << 32) + (1 << 31),
+        ] {
+            trace.row(t, &[], pt);
+            trace.row(t + 1, &["IN"], pt);
+            trace.row(t + 1 + gap, &["IN"], pt);
+            trace.row(t + 2 + gap, &[], pt);
+            trace.row(t + 2 + 2 * gap, &[], pt);
+            trace.row(t + 3 + 2 * gap, &["R"], pt);
+            t += 5 + 2 * gap;
+        }
+    }
+    trace
+}
+
+/// Rows that bring a counter to a known CV: (inputs, preset) pairs, each followed by a row
+/// with every input 0.
+fn setups(block: Block, int_type: IntType) -> Vec<(Vec<&'static str>, String)> {
+    let has = |n: &str| block.input_index(n).is_some();
+    match block.family() {
+        Family::IecCounter => {
+            let (min, max) = int_type.limits();
+            let mut v = Vec::new();
+            if has("R") {
+                v.push((vec!["R"], "3".to_string()));
+            }
+            if has("LD") {
+                for cv in [max, min, 0, 3] {
+                    v.push((vec!["LD"], cv.to_string()));
+                }
+            }
+            v
+        }
+        Family::S5Counter => vec![
+            (vec!["R"], "C#5".to_string()),
+            (vec!["S"], "C#999".to_string()),
+            (vec!["S"], "C#5".to_string()),
+        ],
+        _ => vec![(vec![], String::new())],
+    }
+}
+
+fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
+    let bools: Vec<&'static str> = block
+        .inputs()
+        .iter()
+        .filter(|p| p.kind == ValueKind::Bool)
+        .map(|p| p.name)
+        .collect();
+    let timer_preset = changing_presets(kind)[2];
+    let mut trace = Trace::new(block);
+    let mut t = start_time(kind);
+    for (setup, preset) in setups(block, int_type) {
+        let preset = if preset.is_empty() {
+            timer_preset.to_string()
+        } else {
+            preset
+        };
+        for combo in 0u32..1 << bools.len() {
+            let on: Vec<&str> = (0..bools.len())
+                .filter(|i| combo >> i & 1 == 1)
+                .map(|i| bools[i])
+                .collect();
+            trace.row(t, &setup, &preset);
+            trace.row(t + 1, &[], &preset);
+            trace.row(t + 2, &on, &preset);
+            trace.row(t + 3, &on, &preset);
+            trace.row(t + 13, &[], &preset);
+            t += 30;
+        }
+    }
+    trace
+}
+
+fn limits(block: Block, int_type: IntType) -> Trace {
+    let mut trace = Trace::new(block);
+    let mut t = 0u64;
+    let mut row = |on: &[&str], preset: &str| {
+        trace.row(t, on, preset);
+        t += 1;
+    };
+    match block.family() {
+        Family::S5Counter => {
+            for (set, count) in [
+                ("C#999", "CU"),
+                ("C#998", "CU"),
+                ("C#1", "CD"),
+                ("C#0", "CD"),
+            ] {
+                row(&["S"], set);
+                row(&[], set);
+                for _ in 0..3 {
+                    row(&[count], set);
+                    row(&[], set);
+                }
+            }
+        }
+        _ => {
+            let (min, max) = int_type.limits();
+            for (load, count) in [(max - 1, "CU"), (max, "CU"), (min + 1, "CD"), (min, "CD")] {
+                let pv = load.to_string();
+                row(&["LD"], &pv);
+                row(&[], &pv);
+                for _ in 0..3 {
+                    row(&[count], &pv);
+                    row(&[], &pv);
+                }
+                row(&["CU", "CD"], &pv);
+                row(&[], &pv);
+            }
+            // Without a load input, the top is reached by counting (8-bit types only).
+            if block.input_index("LD").is_none() && max <= 255 {
+                let pv = max.to_string();
+                row(&["R"], &pv);
+                row(&[], &pv);
+                for _ in 0..=max + 2 {
+                    row(&["CU"], &pv);
+                    row(&[], &pv);
+                }
+            }
+        }
+    }
+    trace
+}
+
+fn fr(block: Block, kind: PresetKind) -> Trace {
+    let mut trace = Trace::new(block);
+    let preset = changing_presets(kind)[1];
+    if block.requires_time() {
+        let pattern: &[(u64, &[&str])] = &[
+            (0, &[]),
+            (10, &["S"]),
+            (20, &["S", "FR"]),
+            (30, &["S", "FR"]),
+            (40, &["S"]),
+            (50, &["S", "FR"]),
+            (100, &["S"]),
+            (150, &["S"]),
+            (160, &["S", "FR"]),
+            (170, &["FR"]),
+            (180, &[]),
+            (190, &["FR"]),
+            (200, &["S", "FR"]),
+            (210, &["FR"]),
+            (230, &[]),
+            (240, &["FR"]),
+            (300, &[]),
+            (310, &["S"]),
+            (320, &["S", "R", "FR"]),
+            (330, &["S"]),
+            (340, &["S", "FR"]),
+            (400, &[]),
+            (410, &["FR"]),
+            (420, &[]),
+        ];
+        for &(t, on) in pattern {
+            trace.row(t, on, preset);
+        }
+    } else {
+        for input in ["CU", "CD", "S"] {
+            if block.input_index(input).is_none() {
+                continue;
+            }
+            let pattern: &[&[&str]] = &[
+                &[input],
+                &[input, "FR"],
+                &[input, "FR"],
+                &[input],
+                &[input, "FR"],
+                &["FR"],
+                &[],
+                &["FR"],
+                &[input, "FR"],
+                &[input, "R", "FR"],
+                &[input],
+                &[input, "FR"],
+                &[],
+            ];
+            for on in pattern {
+                trace.row(0, on, preset);
+            }
+        }
+    }
+    trace
+}
+
+/// The reference's output for `text`.
+fn reference(spec: BlockSpec, text: &str) -> Result<String, TraceError> {
+    let mut out = Vec::new();
+    run(spec, &[], text.as_bytes(), &mut out).map_err(|e| match e {
+        super::error::Error::Input(e) => e,
+        super::error::Error::Output(e) => {
+            TraceError::new(super::error::Location::Command, e.to_string())
+        }
+    })?;
+    Ok(String::from_utf8_lossy(&out).into_owned())
+}
+
+/// The example trace of `block` with its preset as a column (comments and blank lines dropped).
+fn example_with_preset(block: Block) -> Option<String> {
+    let example = examples::of(block)?;
+    let (_, value) = example.preset?;
+    let preset = block.preset()?.name;
+    let mut text = String::new();
+    for line in example
+        .text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
+        let extra = if text.is_empty() { preset } else { value };
+        text.push_str(&format!("{line},{extra}\n"));
+    }
+    Some(text)
+}
+
+fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> {
+    let block = spec.block;
+    let Some(kind) = block.preset().map(|p| p.kind) else {
+        return Ok(Vec::new());
+    };
+    let dir = match block.family() {
+        Family::IecCounter => format!("{block}-{}", spec.int_type.name()),
+        _ => block.name().to_string(),
+    };
+    let mut traces: Vec<(String, String)> = Vec::new();
+    if spec.int_type == IntType::DEFAULT {
+        if let Some(text) = example_with_preset(block) {
+            traces.push(("example.csv".into(), text));
+        }
+    }
+    let mut rng = fastrand::Rng::with_seed(seed);
+    for k in 0..TRACES_PER_BLOCK {
+        traces.push((
+            format!("random-{k:02}.csv"),
+            random(block, kind, spec.int_type, &mut rng).text(),
+        ));
+    }
+    traces.push((
+        "preset-change.csv".into(),
+        preset_change(block, kind).text(),
+    ));
+    if kind == PresetKind::Time {
+        traces.push(("long-gaps.csv".into(), long_gaps(block).text()));
+    }
+    if matches!(block.family(), Family::IecCounter | Family::S5Counter) {
+        traces.push(("limits.csv".into(), limits(block, spec.int_type).text()));
+    }
+    traces.push((
+        "simultaneous.csv".into(),
+        simultaneous(block, kind, spec.int_type).text(),
+    ));
+    if block.input_index("FR").is_some() {
+        traces.push(("fr.csv".into(), fr(block, kind).text()));
+    }
+    traces
+        .into_iter()
+        .map(|(file, text)| {
+            Ok(Vector {
+                dir: dir.clone(),
+                file,
+                spec,
+                csv: reference(spec, &text)?,
+            })
+        })
+        .collect()
+}
+
+/// Every vector: each block of the catalog, and each integer type of the IEC counters.
+pub fn all() -> Result<Vec<Vector>, TraceError> {
+    let mut v = Vec::new();
+    for (i, block) in Block::ALL.into_iter().enumerate() {
+        let types: &[IntType] = match block.family() {
+            Family::IecCounter => &IntType::ALL,
+            _ => &[IntType::DEFAULT],
+        };
+        for (j, &ty) in types.iter().enumerate() {
+            let spec = BlockSpec {
+                int_type: ty,
+                ..BlockSpec::new(block)
+            };
+            v.extend(block_vectors(spec, SEED + (i * 16 + j) as u64 + 1)?);
         }
     }
     Ok(v)
 }
 
 /// The README written beside the vectors.
-pub const README: &str = "plc-timers test vectors\n\
-=======================\n\n\
-One directory per block (IEC counters: one per integer type, e.g. CTUD-SINT). Each CSV file is a\n\
-trace in the format of the plc-timers command-line contract: the inputs (t_ms for timers, the\n\
-boolean inputs, the preset as a column) followed by the reference outputs (S5 timers Q,BI,BCD;\n\
-IEC timers Q,ET; CTU/CTD Q,CV; CTUD QU,QD,CV; S5 counters Q,CV,CV_BCD).\n\n\
-example.csv is the crate's example trace; random-NN.csv are generated: clustered edges, presets\n\
-at edge values, time steps around ticks and presets, IEC timers across the 2^32 ms clock wrap.\n\n\
-Replay a file through your implementation, write the same columns, and compare with\n\
-  plc-timers check BLOCK FILE          (add --type T for IEC counters)\n\
-which reports the first differing line and column (exit status 1).\n";
+pub fn readme() -> String {
+    let mut outputs = String::new();
+    for block in Block::ALL {
+        let names: Vec<&str> = block.outputs().iter().map(|p| p.name).collect();
+        outputs.push_str(&format!("  {:<8} {}\n", block.name(), names.join(",")));
+    }
+    format!(
+        "plc-timers test vectors\n\
+         =======================\n\n\
+         One directory per block (IEC counters: one per integer type, e.g. CTUD-SINT). Each CSV\n\
+         file is a trace in the format of spec/cli.md: the inputs (t_ms for timers, the boolean\n\
+         inputs, the preset as a column) followed by the reference outputs:\n\n{outputs}\n\
+         example.csv is the crate's example trace; random-NN.csv are generated (clustered edges,\n\
+         presets at edge values, time steps around ticks and presets, IEC timers across the\n\
+         2^32 ms clock wrap); preset-change.csv changes TV/PT/PV mid-run (the IEC timers latch\n\
+         PT while running); long-gaps.csv (IEC timers) has gaps up to and past 2^31 and 2^32 ms;\n\
+         limits.csv (counters) counts into the type's limits; simultaneous.csv raises every\n\
+         combination of inputs together; fr.csv (S5 blocks) has FR edges.\n\n\
+         Replay a file through your implementation, write the same columns, and compare with\n\
+         \x20 plc-timers check BLOCK FILE          (add --type T for IEC counters)\n\
+         which reports the first differing line and column, the rule that decides it, and the\n\
+         rows before it (exit status 1).\n"
+    )
+}

@@ -1,0 +1,953 @@
+//! The trace engine: the header resolved once against the catalog into column indices, typed
+//! rows, and the three ways a trace is consumed: [`run`] (write the reference outputs),
+//! [`check`] (compare another implementation's outputs) and [`observe`] (hand each step to a
+//! diagram or a VCD writer). All three are generic over the [`Family`] that
+//! [`dispatch`](super::family::dispatch) chooses.
+
+use std::fmt;
+use std::io::{Read, Write};
+
+use plc_timers::catalog::{Block, ValueKind};
+
+use super::error::{show, Error, Location, TraceError};
+use super::family::{dispatch, BlockSpec, Family, Outputs, Signals, Step, Value, Visit, Why};
+use super::reader::{Reader, Record};
+use super::rules;
+
+/// A preset given on the command line: (option without dashes, value), e.g. `("pt", "T#1S")`.
+pub type PresetOption<'a> = (&'a str, &'a str);
+
+/// The name of the time column.
+pub const TIME_COLUMN: &str = "t_ms";
+
+/// How many rows before a difference `check` shows.
+pub const CONTEXT_ROWS: usize = 3;
+
+/// The most bytes of a row's text that `check` keeps for its context.
+const CONTEXT_TEXT: usize = 72;
+
+/// Output is handed to the writer in pieces of about this size.
+const OUT_BUFFER: usize = 64 << 10;
+
+/// What the trace is read for: which columns the header may have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Mode {
+    /// Inputs only (`run`, `diagram`, `vcd`).
+    Inputs,
+    /// Inputs and outputs (`check`).
+    WithOutputs,
+}
+
+/// The header, resolved against the catalog: which column carries what.
+struct Layout {
+    /// The header's names as written (trimmed).
+    names: Vec<String>,
+    /// The column of `t_ms`.
+    time: Option<usize>,
+    /// Each boolean input column and its [`Signals`] bit.
+    bools: Vec<(usize, u32)>,
+    /// The column of the preset.
+    preset: Option<usize>,
+    /// Each output column and its catalog index (check).
+    outputs: Vec<(usize, usize)>,
+    /// The header's line.
+    line: u64,
+}
+
+fn utf8_cell<'a>(rec: &Record<'a>, i: usize) -> Result<&'a str, TraceError> {
+    std::str::from_utf8(rec.cell(i)).map_err(|_| {
+        TraceError::cell(
+            rec.line(),
+            i + 1,
+            &format!("field {}", i + 1),
+            format!(
+                "`{}` is not UTF-8 text; traces are UTF-8",
+                show(rec.cell(i))
+            ),
+        )
+    })
+}
+
+impl Layout {
+    fn resolve(block: Block, header: &Record<'_>, mode: Mode) -> Result<Layout, TraceError> {
+        let mut layout = Layout {
+            names: Vec::with_capacity(header.len()),
+            time: None,
+            bools: Vec::new(),
+            preset: None,
+            outputs: Vec::new(),
+            line: header.line(),
+        };
+        let mut seen_inputs = 0u32;
+        for i in 0..header.len() {
+            let name = utf8_cell(header, i)?;
+            let here = |message: String| TraceError::cell(header.line(), i + 1, name, message);
+            let input = block
+                .inputs()
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(name));
+            let output = block
+                .outputs()
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(name));
+            let duplicate = if name.eq_ignore_ascii_case(TIME_COLUMN) {
+                layout.time.replace(i).is_some()
+            } else if let Some(k) = input {
+                let again = seen_inputs >> k & 1 == 1;
+                seen_inputs |= 1 << k;
+                match block.inputs()[k].kind {
+                    ValueKind::Bool => layout.bools.push((i, 1 << k)),
+                    _ => layout.preset = Some(i),
+                }
+                again
+            } else if let (Some(k), Mode::WithOutputs) = (output, mode) {
+                let again = layout.outputs.iter().any(|&(_, o)| o == k);
+                layout.outputs.push((i, k));
+                again
+            } else if output.is_some() {
+                return Err(here(format!(
+                    "`{name}` is an output of {block}; this command reads inputs only \
+                     (`plc-timers check` compares outputs)"
+                )));
+            } else {
+                return Err(here(format!(
+                    "unknown column `{}`; {block} takes the columns {}",
+                    show(name.as_bytes()),
+                    columns(block, mode)
+                )));
+            };
+            if duplicate {
+                return Err(here(format!("column `{name}` appears twice")));
+            }
+            layout.names.push(name.to_string());
+        }
+        if block.requires_time() && layout.time.is_none() {
+            return Err(TraceError::new(
+                Location::Line(layout.line),
+                format!(
+                    "{block} is a timer: the header needs a `{TIME_COLUMN}` column; the header is `{}`",
+                    show(header.raw())
+                ),
+            ));
+        }
+        Ok(layout)
+    }
+}
+
+/// The columns `block`'s traces may have, as a message lists them.
+fn columns(block: Block, mode: Mode) -> String {
+    let mut names = vec![TIME_COLUMN];
+    names.extend(block.inputs().iter().map(|p| p.name));
+    if mode == Mode::WithOutputs {
+        names.extend(block.outputs().iter().map(|p| p.name));
+    }
+    names.join(", ")
+}
+
+/// Parses a boolean cell: `0`, `1`, `true`, `false` (ASCII case ignored).
+pub fn parse_bool(cell: &[u8]) -> Option<bool> {
+    match cell {
+        b"1" => Some(true),
+        b"0" => Some(false),
+        t if t.eq_ignore_ascii_case(b"true") => Some(true),
+        t if t.eq_ignore_ascii_case(b"false") => Some(false),
+        _ => None,
+    }
+}
+
+/// Parses a whole number of milliseconds, 0..=u64::MAX.
+pub fn parse_u64(cell: &[u8]) -> Option<u64> {
+    if cell.is_empty() || cell.len() > 20 {
+        return None;
+    }
+    let mut v: u64 = 0;
+    for &b in cell {
+        let d = b.wrapping_sub(b'0');
+        if d > 9 {
+            return None;
+        }
+        v = v.checked_mul(10)?.checked_add(u64::from(d))?;
+    }
+    Some(v)
+}
+
+/// Parses an output cell of another implementation as a value of `kind`: a boolean as
+/// [`parse_bool`], an integer in decimal, a word as `W#16#` and 1 to 4 hex digits or decimal.
+#[inline]
+pub fn parse_value(kind: ValueKind, cell: &[u8]) -> Option<Value> {
+    match kind {
+        ValueKind::Bool => return parse_bool(cell).map(Value::Bool),
+        ValueKind::Int if !cell.is_empty() && cell.len() <= 18 => {
+            let (negative, digits) = match cell {
+                [b'-', rest @ ..] => (true, rest),
+                [b'+', rest @ ..] => (false, rest),
+                _ => (false, cell),
+            };
+            let v = i128::from(parse_u64(digits)?);
+            return Some(Value::Int(if negative { -v } else { v }));
+        }
+        _ => {}
+    }
+    let text = std::str::from_utf8(cell).ok()?;
+    match kind {
+        ValueKind::Bool => None,
+        ValueKind::Word => {
+            let hex = text
+                .get(..5)
+                .filter(|p| p.eq_ignore_ascii_case("W#16#"))
+                .map(|_| &text[5..]);
+            match hex {
+                Some(h)
+                    if (1..=4).contains(&h.len()) && h.bytes().all(|b| b.is_ascii_hexdigit()) =>
+                {
+                    u16::from_str_radix(h, 16).ok().map(Value::Word)
+                }
+                Some(_) => None,
+                None => text.parse::<u16>().ok().map(Value::Word),
+            }
+        }
+        ValueKind::Int | ValueKind::Preset(_) => text.parse::<i128>().ok().map(Value::Int),
+    }
+}
+
+/// What a message says a value of `kind` may be.
+fn allowed(kind: ValueKind) -> &'static str {
+    match kind {
+        ValueKind::Bool => "0, 1, true or false",
+        ValueKind::Word => "W#16# and 1 to 4 hexadecimal digits, or 0..65535",
+        _ => "a whole number in decimal",
+    }
+}
+
+/// Appends `v` as the trace format writes it.
+#[inline]
+fn write_value(out: &mut Vec<u8>, v: Value) {
+    match v {
+        Value::Bool(b) => out.push(if b { b'1' } else { b'0' }),
+        Value::Int(i) if (0..10).contains(&i) => out.push(b'0' + i as u8),
+        Value::Int(i) => {
+            let mut buf = itoa::Buffer::new();
+            match u64::try_from(i) {
+                Ok(small) => out.extend_from_slice(buf.format(small).as_bytes()),
+                Err(_) => out.extend_from_slice(buf.format(i).as_bytes()),
+            }
+        }
+        Value::Word(w) => {
+            const HEX: &[u8; 16] = b"0123456789ABCDEF";
+            out.extend_from_slice(b"W#16#");
+            for shift in [12, 8, 4, 0] {
+                out.push(HEX[usize::from(w >> shift & 0xF)]);
+            }
+        }
+    }
+}
+
+/// One executed row.
+struct Row<F: Family> {
+    /// `t_ms`, or the row's index (0-based) when the trace has none.
+    t: u64,
+    /// The previous row's `t` (0 before the first row).
+    last: u64,
+    signals: Signals,
+    preset: F::Preset,
+    output: F::Output,
+}
+
+/// A family with its resolved header, driven row by row.
+struct Engine<F: Family> {
+    family: F,
+    layout: Layout,
+    /// The preset of the command line, parsed once.
+    option: Option<F::Preset>,
+    /// The last preset cell's text and value: a preset column is parsed again only when it
+    /// changes.
+    cached: Option<(Vec<u8>, F::Preset)>,
+    last: u64,
+    rows: u64,
+}
+
+impl<F: Family> Engine<F> {
+    fn new(
+        family: F,
+        header: &Record<'_>,
+        mode: Mode,
+        presets: &[PresetOption<'_>],
+    ) -> Result<Engine<F>, TraceError> {
+        let block = family.block();
+        let layout = Layout::resolve(block, header, mode)?;
+        let preset = block.preset();
+        let mut option = None;
+        for &(name, value) in presets {
+            match preset {
+                Some(p) if p.option == name => {
+                    let parsed = family.parse_preset(value.trim()).map_err(|e| {
+                        TraceError::new(
+                            Location::Option(p.option),
+                            format!("`{}`: {e}", show(value.as_bytes())),
+                        )
+                    })?;
+                    option = Some(parsed);
+                }
+                _ => {
+                    return Err(TraceError::new(
+                        Location::Command,
+                        format!(
+                            "option --{name} does not apply to {block}{}",
+                            preset.map_or(String::new(), |p| format!(
+                                "; its preset {} is given with --{}",
+                                p.name, p.option
+                            ))
+                        ),
+                    ))
+                }
+            }
+        }
+        if let (Some(p), None, None) = (preset, layout.preset, option) {
+            return Err(TraceError::new(
+                Location::Line(layout.line),
+                format!(
+                    "{block} needs its preset: a `{}` column or the option --{}",
+                    p.name, p.option
+                ),
+            ));
+        }
+        Ok(Engine {
+            family,
+            layout,
+            option,
+            cached: None,
+            last: 0,
+            rows: 0,
+        })
+    }
+
+    fn cell_error(&self, rec: &Record<'_>, i: usize, message: String) -> TraceError {
+        TraceError::cell(rec.line(), i + 1, &self.layout.names[i], message)
+    }
+
+    /// Reads `rec`'s inputs and executes the block once.
+    #[inline]
+    fn step(&mut self, rec: &Record<'_>) -> Result<Row<F>, Box<TraceError>> {
+        let width = self.layout.names.len();
+        if rec.len() != width {
+            return Err(Box::new(self.width_error(rec)));
+        }
+        let t = match self.layout.time {
+            Some(i) => {
+                let cell = rec.cell(i);
+                let Some(t) = parse_u64(cell) else {
+                    return Err(Box::new(self.cell_error(
+                        rec,
+                        i,
+                        format!(
+                            "`{}` is not a time; {TIME_COLUMN} is a whole number of milliseconds, 0..={}",
+                            show(cell),
+                            u64::MAX
+                        ),
+                    )));
+                };
+                if self.rows > 0 && t < self.last {
+                    return Err(Box::new(self.cell_error(
+                        rec,
+                        i,
+                        format!(
+                            "{TIME_COLUMN} goes backwards: {t} after {}; time must not decrease",
+                            self.last
+                        ),
+                    )));
+                }
+                t
+            }
+            None => self.rows,
+        };
+        let mut signals = 0u32;
+        for &(i, bit) in &self.layout.bools {
+            match parse_bool(rec.cell(i)) {
+                Some(true) => signals |= bit,
+                Some(false) => {}
+                None => {
+                    return Err(Box::new(self.cell_error(
+                        rec,
+                        i,
+                        format!(
+                            "`{}` is not a boolean; use 0, 1, true or false",
+                            show(rec.cell(i))
+                        ),
+                    )))
+                }
+            }
+        }
+        let preset = match (self.layout.preset, self.option) {
+            (Some(i), _) => self.preset_cell(rec, i)?,
+            (None, Some(p)) => p,
+            // The header check makes sure one of the two exists.
+            (None, None) => {
+                return Err(Box::new(TraceError::new(
+                    Location::Line(rec.line()),
+                    "no preset",
+                )));
+            }
+        };
+        let last = if self.rows == 0 { 0 } else { self.last };
+        let output = self.family.call(t, Signals(signals), preset);
+        self.last = t;
+        self.rows += 1;
+        Ok(Row {
+            t,
+            last,
+            signals: Signals(signals),
+            preset,
+            output,
+        })
+    }
+
+    fn preset_cell(&mut self, rec: &Record<'_>, i: usize) -> Result<F::Preset, Box<TraceError>> {
+        let cell = rec.cell(i);
+        if let Some((text, value)) = &self.cached {
+            if text.as_slice() == cell {
+                return Ok(*value);
+            }
+        }
+        let text = std::str::from_utf8(cell)
+            .map_err(|_| self.cell_error(rec, i, format!("`{}` is not UTF-8 text", show(cell))))?;
+        let value = self
+            .family
+            .parse_preset(text)
+            .map_err(|e| self.cell_error(rec, i, format!("`{}`: {e}", show(cell))))?;
+        let (buf, v) = self.cached.get_or_insert_with(|| (Vec::new(), value));
+        buf.clear();
+        buf.extend_from_slice(cell);
+        *v = value;
+        Ok(value)
+    }
+
+    fn width_error(&self, rec: &Record<'_>) -> TraceError {
+        let width = self.layout.names.len();
+        let header = self.layout.names.join(",");
+        let expected = format!(
+            "the header (line {}) has {width}: {}",
+            self.layout.line,
+            show(header.as_bytes())
+        );
+        if rec.len() > width {
+            TraceError::new(
+                Location::Cell {
+                    line: rec.line(),
+                    column: width + 1,
+                    name: "beyond the header".into(),
+                },
+                format!("the row has {} fields but {expected}", rec.len()),
+            )
+        } else {
+            TraceError::cell(
+                rec.line(),
+                rec.len() + 1,
+                &self.layout.names[rec.len()],
+                format!("the row has {} field(s) but {expected}", rec.len()),
+            )
+        }
+    }
+}
+
+fn empty() -> TraceError {
+    TraceError::new(
+        Location::Line(1),
+        "the trace is empty: it needs a header row (e.g. `t_ms,IN`)",
+    )
+}
+
+// ---------------------------------------------------------------------------------------------
+// run
+
+/// Runs the trace read from `input` through the block of `spec` and writes the trace to
+/// `output`: each record as written (line ends made LF), then the block's outputs. Rows are
+/// written as they are computed: when a row is bad input, the rows before it have been written
+/// (and flushed) and the error is returned. Returns the number of data rows.
+pub fn run<R: Read, W: Write>(
+    spec: BlockSpec,
+    presets: &[PresetOption<'_>],
+    input: R,
+    output: W,
+) -> Result<u64, Error> {
+    struct V<'a, R, W>(&'a [PresetOption<'a>], R, W);
+    impl<R: Read, W: Write> Visit for V<'_, R, W> {
+        type Out = Result<u64, Error>;
+        fn visit<F: Family>(self, family: F) -> Self::Out {
+            run_family(family, self.0, self.1, self.2)
+        }
+    }
+    dispatch(spec, V(presets, input, output))
+}
+
+fn run_family<F: Family, R: Read, W: Write>(
+    family: F,
+    presets: &[PresetOption<'_>],
+    input: R,
+    mut output: W,
+) -> Result<u64, Error> {
+    let mut reader = Reader::new(input);
+    let header = reader.next_record()?.ok_or_else(empty)?;
+    let mut engine = Engine::new(family, &header, Mode::Inputs, presets)?;
+    let mut out: Vec<u8> = Vec::with_capacity(OUT_BUFFER + 1024);
+    out.extend_from_slice(header.raw());
+    for p in engine.family.block().outputs() {
+        out.push(b',');
+        out.extend_from_slice(p.name.as_bytes());
+    }
+    out.push(b'\n');
+    let result = loop {
+        let rec = match reader.next_record() {
+            Ok(Some(rec)) => rec,
+            Ok(None) => break Ok(()),
+            Err(e) => break Err(*e),
+        };
+        let row = match engine.step(&rec) {
+            Ok(row) => row,
+            Err(e) => break Err(*e),
+        };
+        out.extend_from_slice(rec.raw());
+        for &v in engine.family.values(&row.output).as_slice() {
+            out.push(b',');
+            write_value(&mut out, v);
+        }
+        out.push(b'\n');
+        if out.len() >= OUT_BUFFER {
+            output.write_all(&out)?;
+            out.clear();
+        }
+    };
+    output.write_all(&out)?;
+    output.flush()?;
+    result?;
+    Ok(engine.rows)
+}
+
+// ---------------------------------------------------------------------------------------------
+// check
+
+/// A row shown before a difference.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ContextRow {
+    /// Its line.
+    pub line: u64,
+    /// Its text as written (cut after about 70 characters).
+    pub text: String,
+    /// The reference's values of the compared outputs at that row.
+    pub reference: Vec<(&'static str, Value)>,
+}
+
+/// The first place where a trace's outputs differ from the reference, and why the reference
+/// gives its value there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Difference {
+    /// The line of the row.
+    pub line: u64,
+    /// The column (1-based).
+    pub column: usize,
+    /// The output's catalog name.
+    pub output: &'static str,
+    /// What the reference computes.
+    pub expected: Value,
+    /// What the trace has (its cell, trimmed).
+    pub found: String,
+    /// The requirements that decide the reference's value there, and what happened.
+    pub why: Why,
+    /// Up to [`CONTEXT_ROWS`] rows before it, then the row itself.
+    pub context: Vec<ContextRow>,
+}
+
+impl fmt::Display for Difference {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "DIFFERENT at line {}, column {} ({}): the reference gives {}, the trace has {}",
+            self.line, self.column, self.output, self.expected, self.found
+        )?;
+        writeln!(f, "at this row: {}", self.why.what)?;
+        for id in &self.why.rules {
+            writeln!(
+                f,
+                "{id}: {}",
+                rules::rule(id).unwrap_or("(not in the catalog)")
+            )?;
+        }
+        writeln!(f, "rows up to it, with the reference's outputs:")?;
+        let width = self
+            .context
+            .iter()
+            .map(|r| r.text.chars().count())
+            .max()
+            .unwrap_or(0);
+        for (k, row) in self.context.iter().enumerate() {
+            let mark = if k + 1 == self.context.len() {
+                '>'
+            } else {
+                ' '
+            };
+            let text = &row.text;
+            let pad = width - text.chars().count();
+            write!(f, "{mark} line {:<6} {text}{:pad$}  |", row.line, "")?;
+            for (name, v) in &row.reference {
+                write!(f, " {name}={v}")?;
+            }
+            writeln!(f)?;
+        }
+        Ok(())
+    }
+}
+
+/// The result of [`check`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CheckReport {
+    /// The block.
+    pub block: Block,
+    /// The data rows read (up to and including the first difference).
+    pub rows: u64,
+    /// The outputs compared.
+    pub compared: Vec<&'static str>,
+    /// The first difference, if any.
+    pub difference: Option<Difference>,
+}
+
+/// Compares the outputs of a trace (another implementation's) with the reference's, row by
+/// row, up to the first difference. `outputs` restricts the comparison to those outputs (names
+/// of the block's outputs, ASCII case ignored); by default every output of the block is
+/// compared and the trace must have a column for each. A malformed output cell is bad input.
+pub fn check<R: Read>(
+    spec: BlockSpec,
+    presets: &[PresetOption<'_>],
+    outputs: Option<&[&str]>,
+    input: R,
+) -> Result<CheckReport, TraceError> {
+    struct V<'a, R>(&'a [PresetOption<'a>], Option<&'a [&'a str]>, R);
+    impl<R: Read> Visit for V<'_, R> {
+        type Out = Result<CheckReport, TraceError>;
+        fn visit<F: Family>(self, family: F) -> Self::Out {
+            check_family(family, self.0, self.1, self.2)
+        }
+    }
+    dispatch(spec, V(presets, outputs, input))
+}
+
+/// The catalog indices of the outputs to compare.
+fn chosen_outputs(block: Block, outputs: Option<&[&str]>) -> Result<Vec<usize>, TraceError> {
+    let all = block.outputs();
+    let Some(names) = outputs else {
+        return Ok((0..all.len()).collect());
+    };
+    let list: Vec<&str> = all.iter().map(|p| p.name).collect();
+    let mut chosen = Vec::new();
+    for name in names {
+        let i = all
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(name.trim()))
+            .ok_or_else(|| {
+                TraceError::new(
+                    Location::Option("outputs"),
+                    format!(
+                        "`{}` is not an output of {block}; its outputs are {}",
+                        show(name.as_bytes()),
+                        list.join(",")
+                    ),
+                )
+            })?;
+        if !chosen.contains(&i) {
+            chosen.push(i);
+        }
+    }
+    if chosen.is_empty() {
+        return Err(TraceError::new(
+            Location::Option("outputs"),
+            format!("no output named; {block}'s outputs are {}", list.join(",")),
+        ));
+    }
+    Ok(chosen)
+}
+
+/// The last [`CONTEXT_ROWS`] rows: line, the start of the text, the reference's outputs; in
+/// fixed slots, so that keeping them costs no allocation.
+struct Context {
+    slots: [(u64, [u8; CONTEXT_TEXT], usize, Option<Outputs>); CONTEXT_ROWS],
+    next: usize,
+}
+
+impl Context {
+    fn new() -> Context {
+        Context {
+            slots: [(0, [0; CONTEXT_TEXT], 0, None); CONTEXT_ROWS],
+            next: 0,
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, line: u64, text: &[u8], values: Outputs) {
+        let slot = &mut self.slots[self.next % CONTEXT_ROWS];
+        let n = text.len().min(CONTEXT_TEXT);
+        slot.0 = line;
+        slot.1[..n].copy_from_slice(&text[..n]);
+        slot.2 = n;
+        slot.3 = Some(values);
+        self.next += 1;
+    }
+
+    /// The rows, oldest first.
+    fn rows(&self) -> impl Iterator<Item = (u64, &[u8], &Outputs)> {
+        (0..CONTEXT_ROWS).filter_map(move |k| {
+            let (line, text, n, values) = &self.slots[(self.next + k) % CONTEXT_ROWS];
+            values.as_ref().map(|v| (*line, &text[..*n], v))
+        })
+    }
+}
+
+fn check_family<F: Family, R: Read>(
+    family: F,
+    presets: &[PresetOption<'_>],
+    outputs: Option<&[&str]>,
+    input: R,
+) -> Result<CheckReport, TraceError> {
+    let block = family.block();
+    let chosen = chosen_outputs(block, outputs)?;
+    let mut reader = Reader::new(input);
+    let header = reader.next_record()?.ok_or_else(empty)?;
+    let mut engine = Engine::new(family, &header, Mode::WithOutputs, presets)?;
+    // The compared columns: (column, output index), in the order of the catalog.
+    let mut compared = Vec::with_capacity(chosen.len());
+    for &o in &chosen {
+        let port = block.outputs()[o];
+        match engine.layout.outputs.iter().find(|&&(_, k)| k == o) {
+            Some(&(column, _)) => compared.push((column, o)),
+            None => {
+                let names: Vec<&str> = block.outputs().iter().map(|p| p.name).collect();
+                return Err(TraceError::new(
+                    Location::Line(engine.layout.line),
+                    format!(
+                        "the trace has no `{}` column; {block}'s outputs are {} (compare fewer \
+                         with --outputs, e.g. --outputs {})",
+                        port.name,
+                        names.join(","),
+                        names[0]
+                    ),
+                ));
+            }
+        }
+    }
+    let mut report = CheckReport {
+        block,
+        rows: 0,
+        compared: compared
+            .iter()
+            .map(|&(_, o)| block.outputs()[o].name)
+            .collect(),
+        difference: None,
+    };
+    let mut context = Context::new();
+    let mut found = [Value::Bool(false); super::family::MAX_OUTPUTS];
+    let kinds: Vec<ValueKind> = compared
+        .iter()
+        .map(|&(_, o)| block.outputs()[o].kind)
+        .collect();
+    while let Some(rec) = reader.next_record()? {
+        let before = engine.family.state();
+        let row = engine.step(&rec).map_err(|e| *e)?;
+        let values = engine.family.values(&row.output);
+        for (k, &(column, o)) in compared.iter().enumerate() {
+            let kind = kinds[k];
+            let cell = rec.cell(column);
+            let Some(value) = parse_value(kind, cell) else {
+                return Err(engine.cell_error(
+                    &rec,
+                    column,
+                    format!(
+                        "`{}` is not a valid {} output; it is {}",
+                        show(cell),
+                        block.outputs()[o].name,
+                        allowed(kind)
+                    ),
+                ));
+            };
+            found[k] = value;
+        }
+        report.rows += 1;
+        let differing = compared
+            .iter()
+            .enumerate()
+            .find(|&(k, &(_, o))| found[k] != values.as_slice()[o]);
+        if let Some((_, &(column, o))) = differing {
+            let step = Step {
+                now: row.t,
+                last: row.last,
+                signals: row.signals,
+                preset: row.preset,
+                before,
+                after: engine.family.state(),
+                output: o,
+            };
+            let why = engine.family.explain(&step);
+            let shown = |values: &Outputs| -> Vec<(&'static str, Value)> {
+                compared
+                    .iter()
+                    .map(|&(_, o)| (block.outputs()[o].name, values.as_slice()[o]))
+                    .collect()
+            };
+            let mut rows: Vec<ContextRow> = context
+                .rows()
+                .map(|(line, text, values)| ContextRow {
+                    line,
+                    text: show(text),
+                    reference: shown(values),
+                })
+                .collect();
+            rows.push(ContextRow {
+                line: rec.line(),
+                text: show(&rec.raw()[..rec.raw().len().min(CONTEXT_TEXT)]),
+                reference: shown(&values),
+            });
+            report.difference = Some(Difference {
+                line: rec.line(),
+                column: column + 1,
+                output: block.outputs()[o].name,
+                expected: values.as_slice()[o],
+                found: show(rec.cell(column)),
+                why,
+                context: rows,
+            });
+            break;
+        }
+        context.push(rec.line(), rec.raw(), values);
+    }
+    Ok(report)
+}
+
+// ---------------------------------------------------------------------------------------------
+// observe
+
+/// The columns a trace has, for an [`Observer`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Columns {
+    /// The block.
+    pub block: Block,
+    /// Whether the trace has `t_ms` (otherwise the time of a row is its index).
+    pub timed: bool,
+    /// The boolean inputs the trace has, in catalog order, with their [`Signals`] bits.
+    pub inputs: Vec<(&'static str, u32)>,
+    /// The preset's name.
+    pub preset: Option<&'static str>,
+}
+
+/// One step as an [`Observer`] sees it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Observation {
+    /// `t_ms`, or the row's index.
+    pub t: u64,
+    /// The row's line.
+    pub line: u64,
+    /// The boolean inputs.
+    pub signals: Signals,
+    /// The outputs, in catalog order.
+    pub outputs: Outputs,
+    /// Milliseconds per unit of the integer output while it runs ([`Family::ramp`]).
+    pub ramp: Option<u64>,
+    /// The preset in the unit of the integer output ([`Family::preset_mark`]).
+    pub preset: i128,
+}
+
+/// Something that consumes a trace step by step (a diagram, a VCD file).
+pub trait Observer {
+    /// Called once with the trace's columns, before any step.
+    fn start(&mut self, columns: &Columns) -> Result<(), Error>;
+    /// Called for each step; `false` stops reading.
+    fn step(&mut self, step: &Observation) -> Result<bool, Error>;
+}
+
+/// Runs the trace through the block of `spec` and hands each step to `observer`.
+pub fn observe<R: Read>(
+    spec: BlockSpec,
+    presets: &[PresetOption<'_>],
+    input: R,
+    observer: &mut dyn Observer,
+) -> Result<(), Error> {
+    struct V<'a, R>(&'a [PresetOption<'a>], R, &'a mut dyn Observer);
+    impl<R: Read> Visit for V<'_, R> {
+        type Out = Result<(), Error>;
+        fn visit<F: Family>(self, family: F) -> Self::Out {
+            observe_family(family, self.0, self.1, self.2)
+        }
+    }
+    dispatch(spec, V(presets, input, observer))
+}
+
+fn observe_family<F: Family, R: Read>(
+    family: F,
+    presets: &[PresetOption<'_>],
+    input: R,
+    observer: &mut dyn Observer,
+) -> Result<(), Error> {
+    let block = family.block();
+    let mut reader = Reader::new(input);
+    let header = reader.next_record()?.ok_or_else(empty)?;
+    let mut engine = Engine::new(family, &header, Mode::Inputs, presets)?;
+    let inputs = block
+        .inputs()
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| engine.layout.bools.iter().any(|&(_, bit)| bit == 1 << k))
+        .map(|(k, p)| (p.name, 1u32 << k))
+        .collect();
+    observer.start(&Columns {
+        block,
+        timed: engine.layout.time.is_some(),
+        inputs,
+        preset: block.preset().map(|p| p.name),
+    })?;
+    while let Some(rec) = reader.next_record()? {
+        let row = engine.step(&rec).map_err(|e| *e)?;
+        let go_on = observer.step(&Observation {
+            t: row.t,
+            line: rec.line(),
+            signals: row.signals,
+            outputs: engine.family.values(&row.output),
+            ramp: engine.family.ramp(&row.output),
+            preset: engine.family.preset_mark(row.preset),
+        })?;
+        if !go_on {
+            break;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cell_parsers() {
+        assert_eq!(parse_bool(b"TRUE"), Some(true));
+        assert_eq!(parse_bool(b"0"), Some(false));
+        assert_eq!(parse_bool(b"2"), None);
+        assert_eq!(parse_u64(b"18446744073709551615"), Some(u64::MAX));
+        assert_eq!(parse_u64(b"18446744073709551616"), None);
+        assert_eq!(parse_u64(b"-1"), None);
+        assert_eq!(parse_u64(b""), None);
+        assert_eq!(
+            parse_value(ValueKind::Word, b"w#16#00a1"),
+            Some(Value::Word(0xA1))
+        );
+        assert_eq!(parse_value(ValueKind::Word, b"W#16#"), None);
+        assert_eq!(parse_value(ValueKind::Word, b"W#16#12345"), None);
+        assert_eq!(parse_value(ValueKind::Word, b"161"), Some(Value::Word(161)));
+        assert_eq!(parse_value(ValueKind::Int, b"-5"), Some(Value::Int(-5)));
+        assert_eq!(parse_value(ValueKind::Int, b"abc"), None);
+        let mut out = Vec::new();
+        for v in [
+            Value::Bool(true),
+            Value::Int(-12),
+            Value::Int(i128::from(u64::MAX)),
+            Value::Word(0x2127),
+        ] {
+            write_value(&mut out, v);
+            out.push(b' ');
+        }
+        assert_eq!(out, b"1 -12 18446744073709551615 W#16#2127 ");
+    }
+}

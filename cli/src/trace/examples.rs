@@ -1,0 +1,112 @@
+//! The example traces of `examples/traces/`, embedded when the tool is built. The first line of
+//! each is the command that runs it, exactly as the README writes it
+//! (`# cargo run --release -- run TON --pt T#500ms examples/traces/ton.csv`); the block, its
+//! preset and the file are read from that line, so the examples name their own settings.
+
+use plc_timers::catalog::Block;
+
+use super::family::BlockSpec;
+
+mod files {
+    include!(concat!(env!("OUT_DIR"), "/examples.rs"));
+}
+
+/// How each example's first line begins.
+pub const COMMAND_PREFIX: &str = "# cargo run --release -- ";
+
+/// The directory of the examples, from the repository's root.
+pub const DIR: &str = "examples/traces";
+
+/// One example trace.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Example {
+    /// The file stem (`ton`).
+    pub stem: &'static str,
+    /// The command of its first line, after `cargo run --release -- ` (`run TON --pt T#500ms
+    /// examples/traces/ton.csv`).
+    pub command: &'static str,
+    /// The block and `--type`.
+    pub spec: BlockSpec,
+    /// The preset option and its value, if the command gives one.
+    pub preset: Option<(&'static str, &'static str)>,
+    /// The whole text.
+    pub text: &'static str,
+}
+
+/// Reads an example's first line.
+fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
+    let first = text.lines().next().unwrap_or_default();
+    let command = first
+        .strip_prefix(COMMAND_PREFIX)
+        .ok_or_else(|| format!("{stem}.csv: the first line must start with `{COMMAND_PREFIX}`"))?;
+    let words: Vec<&'static str> = command.split_whitespace().collect();
+    let [run, block, rest @ ..] = words.as_slice() else {
+        return Err(format!("{stem}.csv: `{command}` is not `run BLOCK …`"));
+    };
+    let file = format!("{DIR}/{stem}.csv");
+    if *run != "run" || rest.last() != Some(&file.as_str()) {
+        return Err(format!(
+            "{stem}.csv: `{command}` must be `run BLOCK … {file}`"
+        ));
+    }
+    let mut preset = None;
+    let mut int_type = None;
+    let options = &rest[..rest.len() - 1];
+    for pair in options.chunks(2) {
+        match pair {
+            ["--type", t] => int_type = Some(*t),
+            [o, v] if o.starts_with("--") => preset = Some((&o[2..], *v)),
+            _ => {
+                return Err(format!(
+                    "{stem}.csv: cannot read the options of `{command}`"
+                ))
+            }
+        }
+    }
+    let spec = BlockSpec::parse(block, int_type).map_err(|e| format!("{stem}.csv: {e}"))?;
+    Ok(Example {
+        stem,
+        command,
+        spec,
+        preset,
+        text,
+    })
+}
+
+/// Every example, in file order.
+pub fn all() -> Result<Vec<Example>, String> {
+    files::FILES
+        .iter()
+        .map(|&(stem, text)| parse(stem, text))
+        .collect()
+}
+
+/// The example of `block`.
+pub fn of(block: Block) -> Option<Example> {
+    all().ok()?.into_iter().find(|e| e.spec.block == block)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every catalog block has exactly one example, named after it, whose first line is its
+    /// command.
+    #[test]
+    fn one_example_per_block() {
+        let all = all().expect("every example's first line is its command");
+        for block in Block::ALL {
+            let mine: Vec<&Example> = all.iter().filter(|e| e.spec.block == block).collect();
+            assert_eq!(mine.len(), 1, "{block}");
+            assert_eq!(mine[0].stem, block.name().to_ascii_lowercase());
+            assert_eq!(
+                mine[0].preset.map(|p| p.0),
+                block.preset().map(|p| p.option),
+                "{block}"
+            );
+        }
+        assert_eq!(all.len(), Block::ALL.len());
+        assert!(parse("x", "# cargo run --release -- run TON x.csv\n").is_err());
+        assert!(parse("x", "t_ms,IN\n").is_err());
+    }
+}

@@ -1,0 +1,1165 @@
+//! The one generic adapter between a trace row and a block: each family of the core is driven
+//! through its interface trait ([`S5TimerOps`], [`IecTimerOps`], [`CounterOps`],
+//! [`S5CounterOps`]), so the same code drives the reference and the optimized implementation.
+//! [`dispatch`] picks the family, the implementation and (IEC counters) the integer type from a
+//! [`BlockSpec`]; everything else is generic over [`Family`].
+//!
+//! Each family also classifies a step for `check` ([`Family::explain`]): from the block's state
+//! before and after the step it names the requirement that decides an output there. The
+//! semantics stay in the core: the classifier only reads the states the core reports.
+
+use std::fmt;
+use std::marker::PhantomData;
+
+use plc_timers::catalog::{Block, Kind, ValueKind};
+use plc_timers::counter::s5::{
+    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
+    S5CounterRef, S5CounterState,
+};
+use plc_timers::counter::{
+    Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
+    CounterState,
+};
+use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::s5::{
+    ticks_between, S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef,
+};
+use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+
+use super::error::{Location, TraceError};
+
+/// The most outputs a block has (checked against the catalog by a test).
+pub const MAX_OUTPUTS: usize = 3;
+
+/// One output value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Value {
+    /// A boolean (Q, QU, QD), written `0`/`1`.
+    Bool(bool),
+    /// An integer (BI, ET, CV), written in decimal.
+    Int(i128),
+    /// A 16-bit word (BCD, CV_BCD), written `W#16#XXXX`.
+    Word(u16),
+}
+
+impl fmt::Display for Value {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Value::Bool(b) => f.write_str(if b { "1" } else { "0" }),
+            Value::Int(i) => write!(f, "{i}"),
+            Value::Word(w) => write!(f, "W#16#{w:04X}"),
+        }
+    }
+}
+
+/// The outputs of one step, in the catalog's output order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Outputs {
+    values: [Value; MAX_OUTPUTS],
+    len: usize,
+}
+
+/// Fills the unused places of [`Outputs`].
+const NONE: Value = Value::Bool(false);
+
+impl Outputs {
+    #[inline]
+    fn two(a: Value, b: Value) -> Outputs {
+        Outputs {
+            values: [a, b, NONE],
+            len: 2,
+        }
+    }
+
+    #[inline]
+    fn three(a: Value, b: Value, c: Value) -> Outputs {
+        Outputs {
+            values: [a, b, c],
+            len: 3,
+        }
+    }
+
+    /// The values.
+    pub fn as_slice(&self) -> &[Value] {
+        &self.values[..self.len]
+    }
+}
+
+/// The boolean inputs of a row: bit `i` is the catalog's input `i` of the block.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Signals(pub u32);
+
+impl Signals {
+    fn get(self, pin: Pin) -> bool {
+        self.0 & pin.0 != 0
+    }
+}
+
+/// The bit of a catalog input in [`Signals`], resolved by name once when the adapter is built;
+/// 0 (never set) for an input the block does not have (TON has no R).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pin(u32);
+
+impl Pin {
+    fn of(block: Block, name: &str) -> Pin {
+        Pin(input_bit(block, name))
+    }
+}
+
+/// The [`Signals`] bit of `block`'s input `name`; 0 when the block has no such input.
+pub fn input_bit(block: Block, name: &str) -> u32 {
+    block.input_index(name).map_or(0, |i| 1 << i)
+}
+
+/// Which implementation of a block to drive.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Implementation {
+    /// The reference semantics.
+    #[default]
+    Reference,
+    /// The optimized implementation, through the same interface.
+    Optimized,
+}
+
+macro_rules! int_types {
+    ($($variant:ident = $t:ty),* $(,)?) => {
+        /// The integer type of an IEC counter (`--type`); the names are the core's
+        /// [`CounterInt::NAME`].
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum IntType {
+            $(
+                #[doc = concat!("`", stringify!($t), "`.")]
+                $variant,
+            )*
+        }
+
+        impl IntType {
+            /// Every type.
+            pub const ALL: [IntType; 8] = [$(IntType::$variant),*];
+
+            /// The type's name (`SINT`, `INT`, …).
+            pub fn name(self) -> &'static str {
+                match self { $(IntType::$variant => <$t as CounterInt>::NAME,)* }
+            }
+
+            /// The smallest and the largest value.
+            pub fn limits(self) -> (i128, i128) {
+                match self {
+                    $(IntType::$variant => (
+                        <$t as CounterInt>::MIN.to_i128(),
+                        <$t as CounterInt>::MAX.to_i128(),
+                    ),)*
+                }
+            }
+
+            fn dispatch<V: Visit>(self, block: Block, kind: CounterKind, imp: Implementation, v: V) -> V::Out {
+                match self { $(IntType::$variant => counter::<$t, V>(block, kind, imp, v),)* }
+            }
+        }
+    };
+}
+
+int_types!(
+    SInt = i8,
+    Int = i16,
+    DInt = i32,
+    LInt = i64,
+    USInt = u8,
+    UInt = u16,
+    UDInt = u32,
+    ULInt = u64
+);
+
+impl IntType {
+    /// The type called `name` (ASCII case ignored).
+    pub fn lookup(name: &str) -> Option<IntType> {
+        IntType::ALL
+            .into_iter()
+            .find(|t| t.name().eq_ignore_ascii_case(name))
+    }
+
+    /// Every name, separated by blanks.
+    pub fn names() -> String {
+        let names: Vec<&str> = IntType::ALL.iter().map(|t| t.name()).collect();
+        names.join(" ")
+    }
+}
+
+impl IntType {
+    /// INT, the default of `--type`.
+    pub const DEFAULT: IntType = IntType::Int;
+}
+
+/// A block as the command line asks for it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BlockSpec {
+    /// The block.
+    pub block: Block,
+    /// The integer type (IEC counters only; INT otherwise).
+    pub int_type: IntType,
+    /// The implementation to drive.
+    pub implementation: Implementation,
+}
+
+impl BlockSpec {
+    /// The reference of `block` (INT for an IEC counter).
+    pub fn new(block: Block) -> BlockSpec {
+        BlockSpec {
+            block,
+            int_type: IntType::DEFAULT,
+            implementation: Implementation::Reference,
+        }
+    }
+
+    /// The block called `name` (case-insensitive, aliases accepted), with `--type`.
+    pub fn parse(name: &str, int_type: Option<&str>) -> Result<BlockSpec, TraceError> {
+        let block = Block::lookup(name).ok_or_else(|| {
+            TraceError::new(
+                Location::Command,
+                format!(
+                    "unknown block `{}`; the blocks are {}",
+                    super::error::show(name.as_bytes()),
+                    block_names()
+                ),
+            )
+        })?;
+        let mut spec = BlockSpec::new(block);
+        if let Some(t) = int_type {
+            if !matches!(block.kind(), Kind::IecCounter(_)) {
+                return Err(TraceError::new(
+                    Location::Option("type"),
+                    format!(
+                        "--type applies to the IEC counters ({}) only, not to {block}",
+                        names_of(|b| matches!(b.kind(), Kind::IecCounter(_)))
+                    ),
+                ));
+            }
+            spec.int_type = IntType::lookup(t).ok_or_else(|| {
+                TraceError::new(
+                    Location::Option("type"),
+                    format!(
+                        "unknown integer type `{}`; --type takes one of {}",
+                        super::error::show(t.as_bytes()),
+                        IntType::names()
+                    ),
+                )
+            })?;
+        }
+        Ok(spec)
+    }
+
+    /// This spec with `implementation`.
+    pub fn with(self, implementation: Implementation) -> BlockSpec {
+        BlockSpec {
+            implementation,
+            ..self
+        }
+    }
+}
+
+/// The names of the blocks for which `pick` holds, separated by blanks.
+pub fn names_of(pick: impl Fn(Block) -> bool) -> String {
+    let names: Vec<&str> = Block::ALL
+        .into_iter()
+        .filter(|b| pick(*b))
+        .map(Block::name)
+        .collect();
+    names.join(" ")
+}
+
+/// Every block name with its aliases, as messages and help texts list them.
+pub fn block_names() -> String {
+    let names: Vec<String> = Block::ALL
+        .into_iter()
+        .map(|b| match b.aliases() {
+            [] => b.name().to_string(),
+            aliases => format!("{} ({})", b.name(), aliases.join(" ")),
+        })
+        .collect();
+    names.join(", ")
+}
+
+/// Why an output has its value at a step: the requirements that decide it and what happened.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Why {
+    /// Requirement IDs (`spec/requirements/*.toml`), the deciding one first.
+    pub rules: Vec<&'static str>,
+    /// What happened at the step, in a few words.
+    pub what: String,
+}
+
+fn why(rules: &[&'static str], what: impl Into<String>) -> Why {
+    Why {
+        rules: rules.to_vec(),
+        what: what.into(),
+    }
+}
+
+/// One executed step, as [`Family::explain`] sees it.
+#[derive(Clone, Copy, Debug)]
+pub struct Step<P, S> {
+    /// The CPU time of the step (ms).
+    pub now: u64,
+    /// The CPU time of the previous step (0 before the first).
+    pub last: u64,
+    /// The boolean inputs.
+    pub signals: Signals,
+    /// The preset.
+    pub preset: P,
+    /// The state before the step.
+    pub before: S,
+    /// The state after the step.
+    pub after: S,
+    /// The catalog index of the output to explain.
+    pub output: usize,
+}
+
+/// A block family driven through its core interface.
+pub trait Family {
+    /// The preset's type (TV, PT, PV).
+    type Preset: Copy + PartialEq + fmt::Debug;
+    /// The state the core reports.
+    type State: Copy + fmt::Debug;
+    /// The core's output struct.
+    type Output: Copy;
+    /// The block.
+    fn block(&self) -> Block;
+    /// Parses a preset; the error says what is allowed.
+    fn parse_preset(&self, text: &str) -> Result<Self::Preset, String>;
+    /// The preset in the unit of the block's integer output (PT in ms, TV in units, PV), for
+    /// the preset line of a diagram.
+    fn preset_mark(&self, preset: Self::Preset) -> i128;
+    /// One call of the block at CPU time `now`.
+    fn call(&mut self, now: u64, signals: Signals, preset: Self::Preset) -> Self::Output;
+    /// The state.
+    fn state(&self) -> Self::State;
+    /// The output values in catalog order.
+    fn values(&self, output: &Self::Output) -> Outputs;
+    /// Milliseconds per unit of the integer output while it runs (ET: 1, BI: the time base),
+    /// `None` when it does not change with time (CV).
+    fn ramp(&self, output: &Self::Output) -> Option<u64>;
+    /// The requirement that decides output `step.output` at this step.
+    fn explain(&self, step: &Step<Self::Preset, Self::State>) -> Why;
+    /// The catalog inputs the adapter reads, as [`Signals`] bits.
+    fn reads(&self) -> Signals;
+}
+
+/// What is done with a family once [`dispatch`] has chosen it.
+pub trait Visit {
+    /// The result.
+    type Out;
+    /// Does it with `family`.
+    fn visit<F: Family>(self, family: F) -> Self::Out;
+}
+
+/// Builds the family adapter of `spec` and hands it to `v`.
+pub fn dispatch<V: Visit>(spec: BlockSpec, v: V) -> V::Out {
+    use Implementation::{Optimized, Reference};
+    let block = spec.block;
+    match (block.kind(), spec.implementation) {
+        (Kind::S5Timer(k), Reference) => v.visit(S5Adapter::new(block, k, S5TimerRef::new())),
+        (Kind::S5Timer(k), Optimized) => v.visit(S5Adapter::new(block, k, S5Timer::new())),
+        (Kind::IecTimer(k), Reference) => {
+            v.visit(IecAdapter::new(block, k, IecTimerRef::<u32>::new()))
+        }
+        (Kind::IecTimer(k), Optimized) => v.visit(IecAdapter::new(block, k, IecTimer::new())),
+        (Kind::IecCounter(k), imp) => spec.int_type.dispatch(block, k, imp, v),
+        (Kind::S5Counter(k), Reference) => {
+            v.visit(S5CounterAdapter::new(block, k, S5CounterRef::new()))
+        }
+        (Kind::S5Counter(k), Optimized) => {
+            v.visit(S5CounterAdapter::new(block, k, S5Counter::new()))
+        }
+    }
+}
+
+fn counter<N: CounterInt, V: Visit>(
+    block: Block,
+    kind: CounterKind,
+    imp: Implementation,
+    v: V,
+) -> V::Out {
+    match imp {
+        Implementation::Reference => {
+            v.visit(CounterAdapter::new(block, kind, CounterRef::<N>::new()))
+        }
+        Implementation::Optimized => v.visit(CounterAdapter::new(block, kind, Counter::<N>::new())),
+    }
+}
+
+/// Whether output `index` of `block` is a boolean.
+fn is_bool(block: Block, index: usize) -> bool {
+    block
+        .outputs()
+        .get(index)
+        .is_some_and(|p| p.kind == ValueKind::Bool)
+}
+
+// ---------------------------------------------------------------------------------------------
+// S5 timers
+
+/// An S5 timer (reference or packed) as a trace drives it.
+pub struct S5Adapter<T> {
+    timer: T,
+    block: Block,
+    kind: S5Kind,
+    s: Pin,
+    r: Pin,
+    fr: Pin,
+}
+
+impl<T: S5TimerOps> S5Adapter<T> {
+    fn new(block: Block, kind: S5Kind, timer: T) -> S5Adapter<T> {
+        S5Adapter {
+            timer,
+            block,
+            kind,
+            s: Pin::of(block, "S"),
+            r: Pin::of(block, "R"),
+            fr: Pin::of(block, "FR"),
+        }
+    }
+}
+
+/// The rule of each S5 timer kind's start and status.
+fn s5_kind_rule(kind: S5Kind) -> &'static str {
+    match kind {
+        S5Kind::SPulse => "SP-Q-01",
+        S5Kind::SPext => "SE-RUN-ON-01",
+        S5Kind::SOdt => "SD-Q-01",
+        S5Kind::SOdts => "SS-Q-01",
+        S5Kind::SOffdt => "SF-Q-01",
+    }
+}
+
+impl<T: S5TimerOps> Family for S5Adapter<T> {
+    type Preset = S5Time;
+    type State = S5State;
+    type Output = S5Output;
+
+    fn block(&self) -> Block {
+        self.block
+    }
+
+    fn parse_preset(&self, text: &str) -> Result<S5Time, String> {
+        text.parse::<S5Time>().map_err(|e| e.to_string())
+    }
+
+    fn preset_mark(&self, tv: S5Time) -> i128 {
+        i128::from(tv.units())
+    }
+
+    #[inline]
+    fn call(&mut self, now: u64, signals: Signals, tv: S5Time) -> S5Output {
+        let input = S5Input::new(signals.get(self.s), signals.get(self.r), tv)
+            .with_fr(signals.get(self.fr));
+        self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn state(&self) -> S5State {
+        self.timer.state()
+    }
+
+    #[inline]
+    fn values(&self, o: &S5Output) -> Outputs {
+        Outputs::three(
+            Value::Bool(o.q),
+            Value::Int(i128::from(o.bi)),
+            Value::Word(o.bcd),
+        )
+    }
+
+    fn ramp(&self, o: &S5Output) -> Option<u64> {
+        Some(u64::from(
+            TimeBase::from_bits((o.bcd >> 12 & 3) as u8).millis(),
+        ))
+    }
+
+    fn reads(&self) -> Signals {
+        Signals(self.s.0 | self.r.0 | self.fr.0)
+    }
+
+    fn explain(&self, st: &Step<S5Time, S5State>) -> Why {
+        let (b, a) = (&st.before, &st.after);
+        let (s, r, fr) = (
+            st.signals.get(self.s),
+            st.signals.get(self.r),
+            st.signals.get(self.fr),
+        );
+        let kind = self.kind;
+        let kind_rule = s5_kind_rule(kind);
+        let fr_edge = fr && !b.fr_prev;
+        let s_memory = b.s_prev && !fr_edge;
+        let rising = s && !s_memory;
+        let falling = !s && s_memory;
+        let ticks = ticks_between(
+            CpuTime::from_millis(st.last),
+            CpuTime::from_millis(st.now),
+            b.base,
+        );
+        let zero = b.running && b.value == 0;
+        let ran_out = b.running && (zero || ticks >= u64::from(b.value));
+        let start = if kind.starts_on_falling_edge() {
+            falling
+        } else {
+            rising
+        };
+        let status = is_bool(self.block, st.output);
+        let mut w = if r {
+            why(
+                &["S5TMR-R-01"],
+                "R = 1: the timer is reset (stopped, BI = 0, Q = 0)",
+            )
+        } else if start && fr_edge && b.s_prev {
+            why(
+                &["S5TMR-FR-01", kind_rule],
+                format!(
+                    "FR rises with S = {}: the timer restarts with TV = {}",
+                    u8::from(s),
+                    st.preset
+                ),
+            )
+        } else if start {
+            why(
+                &[kind_rule, "S5TMR-EDGE-01"],
+                format!(
+                    "S {}: {} starts with TV = {} ({} units of {} ms)",
+                    if s { "rises" } else { "falls" },
+                    kind.name(),
+                    st.preset,
+                    st.preset.units(),
+                    st.preset.base().millis()
+                ),
+            )
+        } else if ran_out {
+            let q = u8::from(a.q);
+            if zero {
+                why(
+                    &["S5TMR-ZERO-01"],
+                    format!("the timer started with value 0 is found run out: Q = {q}"),
+                )
+            } else {
+                why(
+                    &["S5TMR-EXPIRE-01", "S5TMR-TICK-01"],
+                    format!(
+                        "{ticks} tick(s) of the {} ms base since {} ms: the time runs out, Q = {q}",
+                        b.base.millis(),
+                        st.last
+                    ),
+                )
+            }
+        } else if kind == S5Kind::SOffdt && rising {
+            why(&["SF-Q-01"], "S rises: Q = 1 and a running time stops")
+        } else if matches!(kind, S5Kind::SPulse | S5Kind::SOdt) && !s && (b.running || b.q) {
+            why(
+                &["S5TMR-STOP-01", kind_rule],
+                "S = 0 stops the timer: Q = 0, the remaining value is kept",
+            )
+        } else if b.running && ticks > 0 && !status {
+            why(
+                &["S5TMR-TICK-01"],
+                format!(
+                    "{ticks} tick(s) of the {} ms base since {} ms: BI {} -> {}",
+                    b.base.millis(),
+                    st.last,
+                    b.value,
+                    a.value
+                ),
+            )
+        } else if s && s_memory && !b.running {
+            why(
+                &["S5TMR-EDGE-01", kind_rule],
+                "S held at 1: no edge, so nothing starts",
+            )
+        } else {
+            why(
+                &[kind_rule],
+                format!(
+                    "no start, tick or reset at this call ({}running)",
+                    if a.running { "" } else { "not " }
+                ),
+            )
+        };
+        if self.block.outputs()[st.output].kind == ValueKind::Word {
+            w.rules.push("S5TMR-RANGE-01");
+        }
+        w
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// IEC timers
+
+/// An IEC timer (reference or 16-byte structure) as a trace drives it, on the 32-bit clock.
+pub struct IecAdapter<T> {
+    timer: T,
+    block: Block,
+    kind: IecKind,
+    input: Pin,
+    reset: Pin,
+}
+
+impl<T: IecTimerOps<u32>> IecAdapter<T> {
+    fn new(block: Block, kind: IecKind, timer: T) -> IecAdapter<T> {
+        IecAdapter {
+            timer,
+            block,
+            kind,
+            input: Pin::of(block, "IN"),
+            reset: Pin::of(block, "R"),
+        }
+    }
+}
+
+fn iec_kind_rule(kind: IecKind) -> &'static str {
+    match kind {
+        IecKind::Tp => "TP-IN-01",
+        IecKind::Ton => "TON-IN-01",
+        IecKind::Tof => "TOF-IN-01",
+        IecKind::Tonr => "TONR-IN-01",
+    }
+}
+
+impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
+    type Preset = Time;
+    type State = IecState<u32>;
+    type Output = IecOutput<u32>;
+
+    fn block(&self) -> Block {
+        self.block
+    }
+
+    fn parse_preset(&self, text: &str) -> Result<Time, String> {
+        text.parse::<Time>().map_err(|e| e.to_string())
+    }
+
+    fn preset_mark(&self, pt: Time) -> i128 {
+        i128::from(pt.clamp_negative())
+    }
+
+    #[inline]
+    fn call(&mut self, now: u64, signals: Signals, pt: Time) -> IecOutput<u32> {
+        let input = IecInput::new(signals.get(self.input), pt).with_reset(signals.get(self.reset));
+        self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn state(&self) -> IecState<u32> {
+        self.timer.state()
+    }
+
+    #[inline]
+    fn values(&self, o: &IecOutput<u32>) -> Outputs {
+        Outputs::two(Value::Bool(o.q), Value::Int(i128::from(o.et)))
+    }
+
+    fn ramp(&self, _: &IecOutput<u32>) -> Option<u64> {
+        Some(1)
+    }
+
+    fn reads(&self) -> Signals {
+        Signals(self.input.0 | self.reset.0)
+    }
+
+    fn explain(&self, st: &Step<Time, IecState<u32>>) -> Why {
+        let (b, a) = (&st.before, &st.after);
+        let kind = self.kind;
+        let input = st.signals.get(self.input);
+        let reset = st.signals.get(self.reset);
+        let pt = st.preset.clamp_negative();
+        let gap = st.now.saturating_sub(st.last);
+        let rising = input && !b.input;
+        let started = match kind {
+            IecKind::Tp => rising && !(b.running && a.running && a.start == b.start),
+            IecKind::Ton => rising,
+            IecKind::Tof => !input && b.input,
+            IecKind::Tonr => input && !b.running && !b.q,
+        };
+        let kind_rule = iec_kind_rule(kind);
+        let latched = b.running && !started && pt != b.pt;
+        let status = is_bool(self.block, st.output);
+        if kind == IecKind::Tonr && reset {
+            return why(&["TONR-R-01"], "R = 1 resets ET and Q and stops the timer");
+        }
+        if latched {
+            return why(
+                &["IEC-PT-LATCH-01"],
+                format!(
+                    "PT is now {pt} ms, but the running timer keeps the PT latched at its start ({} ms)",
+                    b.pt
+                ),
+            );
+        }
+        if gap >= 1 << 31 && (b.running || a.running) && !started {
+            return why(
+                &["IEC-WRAP-01"],
+                format!(
+                    "{gap} ms since the last call: elapsed = now - START modulo 2^32 = {} ms",
+                    (st.now as u32).wrapping_sub(b.start)
+                ),
+            );
+        }
+        if started && pt == 0 {
+            return why(
+                &["IEC-PT0-01", kind_rule],
+                "PT = 0: the starting call itself finds ET >= PT",
+            );
+        }
+        if kind == IecKind::Tp && started && b.running {
+            return why(
+                &["TP-RETRIGGER-01"],
+                "the pulse runs out in this call and the rising IN starts a new one",
+            );
+        }
+        if started {
+            let rule = if kind == IecKind::Tonr {
+                "TONR-RESUME-01"
+            } else {
+                "IEC-START-01"
+            };
+            return why(
+                &[rule, kind_rule],
+                format!(
+                    "IN {}: the timer starts, START = {} ms, PT = {pt} ms latched",
+                    if input { "rises" } else { "falls" },
+                    a.start
+                ),
+            );
+        }
+        if b.running && !a.running && a.et == a.pt && input == b.input {
+            return why(
+                &["IEC-EXPIRY-01"],
+                format!(
+                    "ET reaches PT = {} ms in this call: ET stays at PT, Q = {}",
+                    a.pt,
+                    u8::from(a.q)
+                ),
+            );
+        }
+        if kind == IecKind::Tp && rising {
+            return why(
+                &["TP-IN-01"],
+                "a rising IN while the pulse runs has no effect",
+            );
+        }
+        if a.running {
+            let what = if status {
+                format!(
+                    "ET = {} ms < PT = {} ms: Q keeps its value while running",
+                    a.et, a.pt
+                )
+            } else {
+                format!("running: ET = now - START = {} ms", a.et)
+            };
+            let rule = if status {
+                "IEC-EXPIRY-01"
+            } else {
+                "IEC-START-01"
+            };
+            return why(&[rule], what);
+        }
+        if a.q != b.q || a.et != b.et {
+            return why(
+                &[kind_rule],
+                format!(
+                    "IN = {}: Q = {}, ET = {} ms",
+                    u8::from(input),
+                    u8::from(a.q),
+                    a.et
+                ),
+            );
+        }
+        why(
+            &[kind_rule, "IEC-EDGE-01"],
+            format!(
+                "IN = {}, no starting edge: Q and ET unchanged",
+                u8::from(input)
+            ),
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// IEC counters
+
+/// An IEC counter (reference or packed) of integer type `N` as a trace drives it.
+pub struct CounterAdapter<N, C> {
+    counter: C,
+    block: Block,
+    kind: CounterKind,
+    cu: Pin,
+    cd: Pin,
+    r: Pin,
+    ld: Pin,
+    int: PhantomData<N>,
+}
+
+impl<N: CounterInt, C: CounterOps<N>> CounterAdapter<N, C> {
+    fn new(block: Block, kind: CounterKind, counter: C) -> CounterAdapter<N, C> {
+        CounterAdapter {
+            counter,
+            block,
+            kind,
+            cu: Pin::of(block, "CU"),
+            cd: Pin::of(block, "CD"),
+            r: Pin::of(block, "R"),
+            ld: Pin::of(block, "LD"),
+            int: PhantomData,
+        }
+    }
+}
+
+impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
+    type Preset = N;
+    type State = CounterState<N>;
+    type Output = CounterOutput<N>;
+
+    fn block(&self) -> Block {
+        self.block
+    }
+
+    fn parse_preset(&self, text: &str) -> Result<N, String> {
+        let error = || {
+            format!(
+                "not a valid {} preset; PV is a whole number from {} to {}",
+                N::NAME,
+                N::MIN.to_i128(),
+                N::MAX.to_i128()
+            )
+        };
+        let value: i128 = text.trim().parse().map_err(|_| error())?;
+        N::from_i128(value).ok_or_else(error)
+    }
+
+    fn preset_mark(&self, pv: N) -> i128 {
+        pv.to_i128()
+    }
+
+    #[inline]
+    fn call(&mut self, _now: u64, signals: Signals, pv: N) -> CounterOutput<N> {
+        let input = CounterInput {
+            cu: signals.get(self.cu),
+            cd: signals.get(self.cd),
+            r: signals.get(self.r),
+            ld: signals.get(self.ld),
+            pv,
+        };
+        self.counter.call(self.kind, input)
+    }
+
+    fn state(&self) -> CounterState<N> {
+        self.counter.state()
+    }
+
+    #[inline]
+    fn values(&self, o: &CounterOutput<N>) -> Outputs {
+        let cv = Value::Int(o.cv.to_i128());
+        match self.kind {
+            CounterKind::Ctu => Outputs::two(Value::Bool(o.qu), cv),
+            CounterKind::Ctd => Outputs::two(Value::Bool(o.qd), cv),
+            CounterKind::Ctud => Outputs::three(Value::Bool(o.qu), Value::Bool(o.qd), cv),
+        }
+    }
+
+    fn ramp(&self, _: &CounterOutput<N>) -> Option<u64> {
+        None
+    }
+
+    fn reads(&self) -> Signals {
+        Signals(self.cu.0 | self.cd.0 | self.r.0 | self.ld.0)
+    }
+
+    fn explain(&self, st: &Step<N, CounterState<N>>) -> Why {
+        let (b, a) = (&st.before, &st.after);
+        let g = |pin| st.signals.get(pin);
+        let (cu, cd, r, ld) = (g(self.cu), g(self.cd), g(self.r), g(self.ld));
+        let up = cu && !b.cu_prev;
+        let down = cd && !b.cd_prev;
+        let (bcv, acv, pv) = (b.cv.to_i128(), a.cv.to_i128(), st.preset.to_i128());
+        let cv = if r {
+            why(
+                &["CNT-PRIO-01"],
+                "R = 1: CV = 0 (R before LD before counting)",
+            )
+        } else if ld {
+            why(&["CNT-PRIO-01"], format!("LD = 1: CV = PV = {pv}"))
+        } else if up && down {
+            why(&["CNT-SIMUL-01"], "CU and CD rise together: CV unchanged")
+        } else if (up || down) && acv == bcv {
+            why(
+                &["CNT-SAT-01", "CNT-EDGE-01"],
+                format!("CV stays at the {} limit {bcv}", N::NAME),
+            )
+        } else if up || down {
+            why(
+                &["CNT-EDGE-01"],
+                format!("{} rises: CV {bcv} -> {acv}", if up { "CU" } else { "CD" }),
+            )
+        } else {
+            why(
+                &["CNT-EDGE-01"],
+                "no rising CU or CD (a level held at 1 does not count): CV unchanged",
+            )
+        };
+        if !is_bool(self.block, st.output) {
+            return cv;
+        }
+        let qd =
+            self.kind == CounterKind::Ctd || (self.kind == CounterKind::Ctud && st.output == 1);
+        let what = if qd {
+            format!("QD = CV <= 0 with CV = {acv}")
+        } else {
+            format!("QU = CV >= PV with CV = {acv}, PV = {pv}")
+        };
+        let mut rules = vec!["CNT-Q-01"];
+        if acv != bcv {
+            rules.extend(cv.rules);
+            return Why {
+                rules,
+                what: format!("{what}; {}", cv.what),
+            };
+        }
+        Why { rules, what }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// S5 counters
+
+/// An S5 counter (reference or packed word) as a trace drives it.
+pub struct S5CounterAdapter<C> {
+    counter: C,
+    block: Block,
+    kind: S5CounterKind,
+    cu: Pin,
+    cd: Pin,
+    s: Pin,
+    r: Pin,
+    fr: Pin,
+}
+
+impl<C: S5CounterOps> S5CounterAdapter<C> {
+    fn new(block: Block, kind: S5CounterKind, counter: C) -> S5CounterAdapter<C> {
+        S5CounterAdapter {
+            counter,
+            block,
+            kind,
+            cu: Pin::of(block, "CU"),
+            cd: Pin::of(block, "CD"),
+            s: Pin::of(block, "S"),
+            r: Pin::of(block, "R"),
+            fr: Pin::of(block, "FR"),
+        }
+    }
+}
+
+impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
+    type Preset = CounterPreset;
+    type State = S5CounterState;
+    type Output = S5CounterOutput;
+
+    fn block(&self) -> Block {
+        self.block
+    }
+
+    fn parse_preset(&self, text: &str) -> Result<CounterPreset, String> {
+        text.parse::<CounterPreset>().map_err(|e| e.to_string())
+    }
+
+    fn preset_mark(&self, pv: CounterPreset) -> i128 {
+        i128::from(pv.value())
+    }
+
+    #[inline]
+    fn call(&mut self, _now: u64, signals: Signals, pv: CounterPreset) -> S5CounterOutput {
+        let g = |pin| signals.get(pin);
+        let input = S5CounterInput {
+            cu: g(self.cu),
+            cd: g(self.cd),
+            s: g(self.s),
+            r: g(self.r),
+            fr: g(self.fr),
+            pv,
+        };
+        self.counter.call(self.kind, input)
+    }
+
+    fn state(&self) -> S5CounterState {
+        self.counter.state()
+    }
+
+    #[inline]
+    fn values(&self, o: &S5CounterOutput) -> Outputs {
+        Outputs::three(
+            Value::Bool(o.q),
+            Value::Int(i128::from(o.cv)),
+            Value::Word(o.cv_bcd),
+        )
+    }
+
+    fn ramp(&self, _: &S5CounterOutput) -> Option<u64> {
+        None
+    }
+
+    fn reads(&self) -> Signals {
+        Signals(self.cu.0 | self.cd.0 | self.s.0 | self.r.0 | self.fr.0)
+    }
+
+    fn explain(&self, st: &Step<CounterPreset, S5CounterState>) -> Why {
+        let (b, a) = (&st.before, &st.after);
+        let g = |pin| st.signals.get(pin);
+        let (cu, cd, s, r, fr) = (g(self.cu), g(self.cd), g(self.s), g(self.r), g(self.fr));
+        let fr_edge = fr && !b.fr_prev;
+        // An FR edge clears the edge memories before the operations see them.
+        let memory = |m: bool| m && !fr_edge;
+        let up = self.kind.counts_up() && cu && !memory(b.cu_prev);
+        let down = self.kind.counts_down() && cd && !memory(b.cd_prev);
+        let set = s && !memory(b.s_prev);
+        let by_fr = fr_edge && ((up && b.cu_prev) || (down && b.cd_prev) || (set && b.s_prev));
+        let cv = if r {
+            why(
+                &["SC-PRIO-01"],
+                "R = 1: CV = 0 (R last in FR, CU, CD, S, R)",
+            )
+        } else if set {
+            let mut rules = vec!["SC-SET-01"];
+            if by_fr {
+                rules.push("SC-FR-01");
+            }
+            if up || down {
+                rules.push("SC-PRIO-01");
+            }
+            Why {
+                rules,
+                what: format!("S rises: CV = PV = {}", st.preset.value()),
+            }
+        } else if up && down {
+            why(
+                &["SC-SIMUL-01"],
+                format!("CU and CD rise together: CV {} -> {}", b.cv, a.cv),
+            )
+        } else if by_fr {
+            why(
+                &["SC-FR-01", "SC-EDGE-01"],
+                format!(
+                    "FR rises: the held count input counts again, CV {} -> {}",
+                    b.cv, a.cv
+                ),
+            )
+        } else if (up || down) && a.cv == b.cv {
+            why(&["SC-SAT-01"], format!("CV stays at {}", b.cv))
+        } else if up || down {
+            why(
+                &["SC-EDGE-01"],
+                format!(
+                    "{} rises: CV {} -> {}",
+                    if up { "CU" } else { "CD" },
+                    b.cv,
+                    a.cv
+                ),
+            )
+        } else {
+            why(
+                &["SC-EDGE-01"],
+                "no rising CU, CD or S (a level held at 1 acts once): CV unchanged",
+            )
+        };
+        let (rule, what) = match self.block.outputs()[st.output].kind {
+            ValueKind::Bool => ("SC-Q-01", format!("Q = CV != 0 with CV = {}", a.cv)),
+            ValueKind::Word => ("SC-RANGE-01", format!("CV_BCD is CV = {} in BCD", a.cv)),
+            _ => return cv,
+        };
+        let mut rules = vec![rule];
+        if a.cv != b.cv {
+            rules.extend(cv.rules);
+            return Why {
+                rules,
+                what: format!("{what}; {}", cv.what),
+            };
+        }
+        Why { rules, what }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use plc_timers::catalog::Port;
+
+    /// Records what a visit saw.
+    struct Probe;
+    impl Visit for Probe {
+        type Out = (Block, Vec<Value>, Vec<bool>);
+        fn visit<F: Family>(self, mut f: F) -> Self::Out {
+            let block = f.block();
+            let preset = match block.preset().map(|p| p.kind) {
+                Some(plc_timers::catalog::PresetKind::S5Time) => "S5T#10MS",
+                Some(plc_timers::catalog::PresetKind::Time) => "T#10MS",
+                _ => "1",
+            };
+            let p = f.parse_preset(preset).expect("a valid preset");
+            let out = f.call(0, Signals(0), p);
+            // Which catalog inputs the adapter reads.
+            let reads = f.reads().0;
+            let used = block
+                .inputs()
+                .iter()
+                .enumerate()
+                .map(|(i, port)| (port.kind == ValueKind::Bool) == (reads >> i & 1 == 1))
+                .collect();
+            (block, f.values(&out).as_slice().to_vec(), used)
+        }
+    }
+
+    /// Every block's adapter gives as many outputs as the catalog lists, of the catalog's kinds,
+    /// and resolves every boolean input the catalog lists.
+    #[test]
+    fn adapters_follow_the_catalog() {
+        for block in Block::ALL {
+            for imp in [Implementation::Reference, Implementation::Optimized] {
+                let (b, values, used) = dispatch(BlockSpec::new(block).with(imp), Probe);
+                assert_eq!(b, block);
+                let kinds: Vec<ValueKind> = values
+                    .iter()
+                    .map(|v| match v {
+                        Value::Bool(_) => ValueKind::Bool,
+                        Value::Int(_) => ValueKind::Int,
+                        Value::Word(_) => ValueKind::Word,
+                    })
+                    .collect();
+                let catalog: Vec<ValueKind> =
+                    block.outputs().iter().map(|p: &Port| p.kind).collect();
+                assert_eq!(kinds, catalog, "{block}");
+                assert!(
+                    used.iter().all(|u| *u),
+                    "{block}: the adapter reads exactly the boolean inputs"
+                );
+                assert!(block.outputs().len() <= MAX_OUTPUTS);
+            }
+        }
+    }
+
+    #[test]
+    fn int_types_and_block_specs() {
+        assert_eq!(
+            IntType::names(),
+            "SINT INT DINT LINT USINT UINT UDINT ULINT"
+        );
+        assert_eq!(IntType::lookup("udint"), Some(IntType::UDInt));
+        assert_eq!(IntType::ULInt.limits(), (0, i128::from(u64::MAX)));
+        assert_eq!(IntType::SInt.limits(), (-128, 127));
+        assert_eq!(
+            BlockSpec::parse("sd", None).map(|s| s.block),
+            Ok(Block::SOdt)
+        );
+        let e = BlockSpec::parse("TON", Some("INT")).expect_err("no --type for TON");
+        assert_eq!(e.location, Location::Option("type"));
+        let e = BlockSpec::parse("CTU", Some("INT8")).expect_err("unknown type");
+        assert!(e.message.contains("SINT INT DINT"), "{e}");
+        let e = BlockSpec::parse("NOPE", None).expect_err("unknown block");
+        assert!(e.message.contains("S_PULSE (SP)"), "{e}");
+        assert_eq!(
+            BlockSpec::parse("ctud", Some("ulint")).map(|s| s.int_type),
+            Ok(IntType::ULInt)
+        );
+    }
+}

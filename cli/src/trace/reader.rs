@@ -1,0 +1,562 @@
+//! A strict RFC 4180 reader of traces that knows where it is: every record carries the line it
+//! starts on, counted over LF and CRLF line ends, blank lines and `#` comment lines alike.
+//!
+//! Rules (spec/cli.md, "Input text"): fields are separated by `,`; records end at LF or CRLF;
+//! a UTF-8 byte-order mark at the start is skipped; a line that is empty, blank (spaces and
+//! tabs) or whose first non-blank character is `#` is skipped. A field may be quoted: blanks,
+//! then `"`, the text with every `"` doubled (line ends allowed), `"`, then blanks. A quote
+//! anywhere else (inside an unquoted field, or after the closing quote) and a quote left open at
+//! the end of the input are errors. No record may be longer than [`MAX_RECORD`] bytes.
+//!
+//! The reader allocates only while its buffers grow: records are read into one buffer and
+//! handed out as borrowed [`Record`]s.
+
+use std::io::Read;
+
+use super::error::{show, Location, TraceError};
+
+/// The longest record the reader accepts, in bytes (a bound on its memory).
+pub const MAX_RECORD: usize = 64 << 20;
+
+const INITIAL_BUFFER: usize = 64 << 10;
+
+/// One field of the record: a range of the input buffer, or (quoted fields) of the unquoted copy.
+#[derive(Clone, Copy, Debug)]
+struct Field {
+    start: usize,
+    end: usize,
+    quoted: bool,
+}
+
+/// A record of the trace, borrowed from the reader until the next read.
+#[derive(Debug)]
+pub struct Record<'a> {
+    buf: &'a [u8],
+    unquoted: &'a [u8],
+    fields: &'a [Field],
+    raw: (usize, usize),
+    line: u64,
+}
+
+impl<'a> Record<'a> {
+    /// The line the record starts on (1-based).
+    pub fn line(&self) -> u64 {
+        self.line
+    }
+
+    /// The number of fields.
+    pub fn len(&self) -> usize {
+        self.fields.len()
+    }
+
+    /// Whether the record has no field (never: an empty line is skipped).
+    pub fn is_empty(&self) -> bool {
+        self.fields.is_empty()
+    }
+
+    #[inline]
+    /// Field `i` (0-based) as its bytes, unquoted, blanks kept; empty when there is no such field.
+    pub fn field(&self, i: usize) -> &'a [u8] {
+        match self.fields.get(i) {
+            Some(f) if f.quoted => &self.unquoted[f.start..f.end],
+            Some(f) => &self.buf[f.start..f.end],
+            None => &[],
+        }
+    }
+
+    #[inline]
+    /// Field `i` without the blanks (spaces, tabs) around it.
+    pub fn cell(&self, i: usize) -> &'a [u8] {
+        trim(self.field(i))
+    }
+
+    /// The record's text as written, without its line end (quotes kept).
+    pub fn raw(&self) -> &'a [u8] {
+        &self.buf[self.raw.0..self.raw.1]
+    }
+}
+
+/// `bytes` without leading and trailing spaces and tabs.
+#[inline]
+pub fn trim(bytes: &[u8]) -> &[u8] {
+    let blank = |b: &u8| *b == b' ' || *b == b'\t';
+    let start = bytes.iter().position(|b| !blank(b)).unwrap_or(bytes.len());
+    let end = bytes
+        .iter()
+        .rposition(|b| !blank(b))
+        .map_or(start, |e| e + 1);
+    &bytes[start..end]
+}
+
+/// Why a record could not be parsed from the bytes at hand.
+enum Incomplete {
+    /// More input is needed (a quoted field goes on past the buffered bytes).
+    NeedMore,
+    /// The record is malformed.
+    Bad(TraceError),
+}
+
+/// Reads records from a byte stream.
+pub struct Reader<R> {
+    src: R,
+    buf: Vec<u8>,
+    /// The first byte not yet consumed.
+    pos: usize,
+    /// The end of the bytes read.
+    end: usize,
+    eof: bool,
+    /// The line of `buf[pos]`.
+    line: u64,
+    at_start: bool,
+    /// Whether the last [`Reader::scan_line`] stopped at a quote.
+    quote_seen: bool,
+    fields: Vec<Field>,
+    unquoted: Vec<u8>,
+}
+
+impl<R: Read> Reader<R> {
+    /// A reader of `src`.
+    pub fn new(src: R) -> Reader<R> {
+        Reader {
+            src,
+            buf: vec![0; INITIAL_BUFFER],
+            pos: 0,
+            end: 0,
+            eof: false,
+            line: 1,
+            at_start: true,
+            quote_seen: false,
+            fields: Vec::new(),
+            unquoted: Vec::new(),
+        }
+    }
+
+    /// Reads more input after the unconsumed bytes; makes room first (moving the unconsumed
+    /// bytes to the front, or growing the buffer up to [`MAX_RECORD`]).
+    fn fill(&mut self) -> Result<(), TraceError> {
+        if self.pos > 0 {
+            self.buf.copy_within(self.pos..self.end, 0);
+            self.end -= self.pos;
+            self.pos = 0;
+        }
+        if self.end == self.buf.len() {
+            if self.buf.len() >= MAX_RECORD {
+                return Err(TraceError::new(
+                    Location::Line(self.line),
+                    format!("the record is longer than {} MiB", MAX_RECORD >> 20),
+                ));
+            }
+            self.buf.resize((self.buf.len() * 2).min(MAX_RECORD), 0);
+        }
+        loop {
+            match self.src.read(&mut self.buf[self.end..]) {
+                Ok(0) => {
+                    self.eof = true;
+                    return Ok(());
+                }
+                Ok(n) => {
+                    self.end += n;
+                    return Ok(());
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(e) => {
+                    return Err(TraceError::new(
+                        Location::Line(self.line),
+                        format!("cannot read the trace: {e}"),
+                    ))
+                }
+            }
+        }
+    }
+
+    /// The next record, or `None` at the end of the input.
+    pub fn next_record(&mut self) -> Result<Option<Record<'_>>, Box<TraceError>> {
+        loop {
+            if self.at_start {
+                while self.end - self.pos < 3 && !self.eof {
+                    self.fill()?;
+                }
+                if self.buf[self.pos..self.end].starts_with(b"\xef\xbb\xbf") {
+                    self.pos += 3;
+                }
+                self.at_start = false;
+            }
+            // The common case first: one pass over a line without quotes, splitting at commas.
+            match self.scan_line() {
+                Some((line_end, next)) => {
+                    if self.is_skipped(line_end) {
+                        self.pos = next;
+                        self.line += 1;
+                        continue;
+                    }
+                    let record = Record {
+                        buf: &self.buf,
+                        unquoted: &self.unquoted,
+                        fields: &self.fields,
+                        raw: (self.pos, line_end),
+                        line: self.line,
+                    };
+                    self.pos = next;
+                    self.line += 1;
+                    return Ok(Some(record));
+                }
+                None if self.pos == self.end && self.eof => return Ok(None),
+                None if self.quote_seen => {}
+                None => {
+                    self.fill()?;
+                    continue;
+                }
+            }
+            // A line with a quote (or a blank or comment line that has one).
+            let newline = memchr::memchr(b'\n', &self.buf[self.pos..self.end]);
+            let Some(newline) = newline.map(|n| self.pos + n).or_else(|| {
+                // The last line may have no line end.
+                (self.eof && self.pos < self.end).then_some(self.end)
+            }) else {
+                self.fill()?;
+                continue;
+            };
+            let line = &self.buf[self.pos..newline];
+            let content = trim(line.strip_suffix(b"\r").unwrap_or(line));
+            if content.is_empty() || content[0] == b'#' {
+                self.pos = (newline + 1).min(self.end);
+                self.line += 1;
+                continue;
+            }
+            self.fields.clear();
+            self.unquoted.clear();
+            match self.parse_quoted() {
+                Ok((raw_end, next, lines)) => {
+                    let record = Record {
+                        buf: &self.buf,
+                        unquoted: &self.unquoted,
+                        fields: &self.fields,
+                        raw: (self.pos, raw_end),
+                        line: self.line,
+                    };
+                    self.pos = next;
+                    self.line += lines;
+                    return Ok(Some(record));
+                }
+                Err(Incomplete::Bad(e)) => return Err(Box::new(e)),
+                Err(Incomplete::NeedMore) if self.eof => {
+                    return Err(Box::new(TraceError::new(
+                        Location::Line(self.line),
+                        "the trace ends inside this record",
+                    )))
+                }
+                Err(Incomplete::NeedMore) => self.fill()?,
+            }
+        }
+    }
+
+    /// Splits the line at `self.pos` into fields if it is complete in the buffer and has no
+    /// quote: returns the end of its text (CR excluded) and the start of the next line. `None`
+    /// when it needs more input, or (with `quote_seen`) when it has a quote.
+    #[inline]
+    fn scan_line(&mut self) -> Option<(usize, usize)> {
+        self.quote_seen = false;
+        self.fields.clear();
+        let buf = &self.buf[..self.end];
+        let mut start = self.pos;
+        let mut i = self.pos;
+        while i < buf.len() {
+            match buf[i] {
+                b',' => {
+                    self.fields.push(Field {
+                        start,
+                        end: i,
+                        quoted: false,
+                    });
+                    start = i + 1;
+                }
+                b'\n' => break,
+                b'"' => {
+                    self.quote_seen = true;
+                    return None;
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        if i == buf.len() && !self.eof {
+            return None;
+        }
+        if i == self.pos && i == buf.len() {
+            return None;
+        }
+        let end = if i > start && buf[i - 1] == b'\r' {
+            i - 1
+        } else {
+            i
+        };
+        let line_end = if i > self.pos && buf[i - 1] == b'\r' {
+            i - 1
+        } else {
+            i
+        };
+        self.fields.push(Field {
+            start,
+            end: end.max(start),
+            quoted: false,
+        });
+        Some((line_end, (i + 1).min(buf.len())))
+    }
+
+    /// Whether the line at `self.pos` ending at `line_end` is blank or a comment.
+    #[inline]
+    fn is_skipped(&self, line_end: usize) -> bool {
+        match self.buf.get(self.pos) {
+            None => true,
+            Some(b' ' | b'\t' | b'#' | b'\r' | b'\n') => {
+                let content = trim(&self.buf[self.pos..line_end]);
+                content.is_empty() || content[0] == b'#'
+            }
+            Some(_) => self.pos == line_end,
+        }
+    }
+
+    /// The general case: a record with quotes, which may span lines.
+    fn parse_quoted(&mut self) -> Result<(usize, usize, u64), Incomplete> {
+        let buf = &self.buf[..self.end];
+        let mut i = self.pos;
+        let mut lines = 0u64;
+        let column = |fields: &Vec<Field>| fields.len() + 1;
+        loop {
+            // At the start of a field.
+            let field_start = i;
+            while i < buf.len() && (buf[i] == b' ' || buf[i] == b'\t') {
+                i += 1;
+            }
+            if i < buf.len() && buf[i] == b'"' {
+                let open_line = self.line + lines;
+                let start = self.unquoted.len();
+                i += 1;
+                loop {
+                    match memchr::memchr(b'"', &buf[i..]) {
+                        None => {
+                            if self.eof {
+                                return Err(Incomplete::Bad(TraceError::new(
+                                    Location::Cell {
+                                        line: open_line,
+                                        column: column(&self.fields),
+                                        name: format!("field {}", column(&self.fields)),
+                                    },
+                                    "the quote opened here is never closed; a quoted cell ends \
+                                     with `\"` (write a quote inside it as `\"\"`)",
+                                )));
+                            }
+                            return Err(Incomplete::NeedMore);
+                        }
+                        Some(q) => {
+                            let chunk = &buf[i..i + q];
+                            lines += memchr::memchr_iter(b'\n', chunk).count() as u64;
+                            self.unquoted.extend_from_slice(chunk);
+                            i += q + 1;
+                            if i < buf.len() && buf[i] == b'"' {
+                                self.unquoted.push(b'"');
+                                i += 1;
+                            } else if i == buf.len() && !self.eof {
+                                return Err(Incomplete::NeedMore);
+                            } else {
+                                break;
+                            }
+                        }
+                    }
+                }
+                self.fields.push(Field {
+                    start,
+                    end: self.unquoted.len(),
+                    quoted: true,
+                });
+                while i < buf.len() && (buf[i] == b' ' || buf[i] == b'\t') {
+                    i += 1;
+                }
+                match buf.get(i) {
+                    Some(b',') => i += 1,
+                    Some(b'\n') => return Ok((i, i + 1, lines + 1)),
+                    Some(b'\r') if buf.get(i + 1) == Some(&b'\n') => {
+                        return Ok((i, i + 2, lines + 1))
+                    }
+                    Some(b'\r') if i + 1 == buf.len() && !self.eof => {
+                        return Err(Incomplete::NeedMore)
+                    }
+                    None if self.eof => return Ok((i, i, lines + 1)),
+                    None => return Err(Incomplete::NeedMore),
+                    Some(_) => {
+                        let n = self.fields.len();
+                        let end = memchr::memchr3(b',', b'\n', b'\r', &buf[i..])
+                            .map_or(buf.len(), |e| i + e);
+                        return Err(Incomplete::Bad(TraceError::new(
+                            Location::Cell {
+                                line: self.line + lines,
+                                column: n,
+                                name: format!("field {n}"),
+                            },
+                            format!(
+                                "`{}` after the closing quote; a quoted cell ends at its \
+                                 closing `\"` (write a quote inside it as `\"\"`)",
+                                show(&buf[i..end])
+                            ),
+                        )));
+                    }
+                }
+            } else {
+                // An unquoted field: up to the next comma or line end; no quote inside.
+                let end =
+                    memchr::memchr3(b',', b'\n', b'"', &buf[i..]).map_or(buf.len(), |e| i + e);
+                if end == buf.len() && !self.eof {
+                    return Err(Incomplete::NeedMore);
+                }
+                match buf.get(end) {
+                    Some(b'"') => {
+                        let col = column(&self.fields);
+                        let stop = memchr::memchr2(b',', b'\n', &buf[field_start..])
+                            .map_or(buf.len(), |e| field_start + e);
+                        return Err(Incomplete::Bad(TraceError::new(
+                            Location::Cell {
+                                line: self.line + lines,
+                                column: col,
+                                name: format!("field {col}"),
+                            },
+                            format!(
+                                "stray quote in `{}`; a quote may only open a cell (blanks \
+                                 before it allowed) and close it",
+                                show(trim(strip_cr(&buf[field_start..stop])))
+                            ),
+                        )));
+                    }
+                    Some(b',') => {
+                        push_copy(&mut self.unquoted, &mut self.fields, &buf[field_start..end]);
+                        i = end + 1;
+                    }
+                    _ => {
+                        // A line end or the end of the input.
+                        let text_end = if end > field_start && buf[end - 1] == b'\r' {
+                            end - 1
+                        } else {
+                            end
+                        };
+                        push_copy(
+                            &mut self.unquoted,
+                            &mut self.fields,
+                            &buf[field_start..text_end],
+                        );
+                        let next = (end + 1).min(buf.len());
+                        return Ok((text_end, next, lines + 1));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Records an unquoted field of a record with quotes (copied beside the quoted ones, so that
+/// every field of such a record is read from the same place).
+fn push_copy(unquoted: &mut Vec<u8>, fields: &mut Vec<Field>, text: &[u8]) {
+    let start = unquoted.len();
+    unquoted.extend_from_slice(text);
+    fields.push(Field {
+        start,
+        end: unquoted.len(),
+        quoted: true,
+    });
+}
+
+fn strip_cr(b: &[u8]) -> &[u8] {
+    b.strip_suffix(b"\r").unwrap_or(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every record as (line, fields, raw), read through a reader that gets `chunk` bytes at a
+    /// time, so that records cross buffer refills.
+    fn records(input: &[u8], chunk: usize) -> Result<Vec<(u64, Vec<String>, String)>, TraceError> {
+        struct Chunks<'a>(&'a [u8], usize);
+        impl Read for Chunks<'_> {
+            fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+                let n = self.0.len().min(self.1).min(out.len());
+                out[..n].copy_from_slice(&self.0[..n]);
+                self.0 = &self.0[n..];
+                Ok(n)
+            }
+        }
+        let mut r = Reader::new(Chunks(input, chunk));
+        let mut out = Vec::new();
+        while let Some(rec) = r.next_record()? {
+            let fields = (0..rec.len())
+                .map(|i| String::from_utf8_lossy(rec.field(i)).into_owned())
+                .collect();
+            out.push((
+                rec.line(),
+                fields,
+                String::from_utf8_lossy(rec.raw()).into_owned(),
+            ));
+        }
+        Ok(out)
+    }
+
+    fn lines(input: &[u8]) -> Vec<u64> {
+        let all = records(input, 1 << 20).expect("valid");
+        for chunk in [1, 2, 3, 7] {
+            assert_eq!(records(input, chunk).expect("valid"), all, "chunk {chunk}");
+        }
+        all.into_iter().map(|r| r.0).collect()
+    }
+
+    #[test]
+    fn line_numbers_lf_crlf_blank_and_comments() {
+        assert_eq!(lines(b"a,b\n1,2\n3,4\n"), [1, 2, 3]);
+        assert_eq!(lines(b"a,b\r\n1,2\r\n3,4\r\n"), [1, 2, 3]);
+        assert_eq!(
+            lines(b"# c\r\na,b\r\n\r\n  \r\n1,2\r\n# x\r\n3,4"),
+            [2, 5, 7]
+        );
+        assert_eq!(lines(b"\xef\xbb\xbf#c\n\na\n\t\n1\n"), [3, 5]);
+        assert_eq!(lines(b"a\n\"x\ny\"\n2\n"), [1, 2, 4]);
+        assert_eq!(lines(b"a\r\n\"x\r\ny\"\r\n2\r\n"), [1, 2, 4]);
+    }
+
+    #[test]
+    fn fields_and_raw_text() {
+        let r = records(b" a , \"b,\"\"c\"\" \" ,\r\n,\n", 4).expect("valid");
+        assert_eq!(r[0].1, [" a ", "b,\"c\" ", ""]);
+        assert_eq!(r[0].2, " a , \"b,\"\"c\"\" \" ,");
+        assert_eq!(r[1].1, ["", ""]);
+        let r = records(b"x,\"y\"", 1).expect("valid");
+        assert_eq!(r[0].1, ["x", "y"]);
+        assert_eq!(trim(b" \t a b\t "), b"a b");
+    }
+
+    #[test]
+    fn strict_quotes() {
+        for (input, line, column) in [
+            (&b"a,b\n1,2\"\n"[..], 2, 2),
+            (b"a,b\n1,\"2\"x\n", 2, 2),
+            (b"a,b\r\n\r\n1,\"2\n\n", 3, 2),
+            (b"a\n\"\"\"\n", 2, 1),
+        ] {
+            for chunk in [1, 5, 1 << 20] {
+                let e = records(input, chunk).expect_err("bad quotes");
+                match e.location {
+                    Location::Cell {
+                        line: l, column: c, ..
+                    } => {
+                        assert_eq!((l, c), (line, column), "{e}")
+                    }
+                    _ => panic!("{e}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn long_records_are_bounded() {
+        let mut long = b"a\n".to_vec();
+        long.extend(std::iter::repeat_n(b'x', MAX_RECORD + 10));
+        let e = records(&long, 1 << 20).expect_err("too long");
+        assert_eq!(e.location, Location::Line(2));
+    }
+}
