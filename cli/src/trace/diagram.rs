@@ -344,24 +344,50 @@ fn tick_step(span: f64, n: f64) -> f64 {
         .unwrap_or(raw)
 }
 
+/// A polyline's points, mapped to the drawing and rounded to 0.1 px; a point equal to the one
+/// before is left out.
+struct Points<'a> {
+    text: String,
+    previous: (f64, f64),
+    x: &'a dyn Fn(f64) -> f64,
+    y: &'a dyn Fn(i128) -> f64,
+}
+
+impl<'a> Points<'a> {
+    fn new(x: &'a dyn Fn(f64) -> f64, y: &'a dyn Fn(i128) -> f64) -> Points<'a> {
+        Points {
+            text: String::new(),
+            previous: (f64::NAN, f64::NAN),
+            x,
+            y,
+        }
+    }
+
+    fn push(&mut self, t: f64, v: i128) {
+        let p = (
+            ((self.x)(t) * 10.0).round() / 10.0,
+            ((self.y)(v) * 10.0).round() / 10.0,
+        );
+        if p != self.previous {
+            let _ = write!(self.text, "{:.1},{:.1} ", p.0, p.1);
+            self.previous = p;
+        }
+    }
+
+    fn finish(self) -> String {
+        self.text.trim_end().to_string()
+    }
+}
+
 /// The points of lane `k` (value `v` mapped by `y`), drawn exactly from the samples.
 fn exact_points(
     samples: &[Sample],
     k: usize,
     ramp: bool,
-    x: &dyn Fn(f64) -> f64,
-    y: &dyn Fn(i128) -> f64,
+    mut pts: Points<'_>,
     t_end: f64,
 ) -> String {
-    let mut pts = String::new();
-    let mut previous = (f64::NAN, f64::NAN);
-    let mut point = |t: f64, v: i128| {
-        let p = ((x(t) * 10.0).round() / 10.0, (y(v) * 10.0).round() / 10.0);
-        if p != previous {
-            let _ = write!(pts, "{:.1},{:.1} ", p.0, p.1);
-            previous = p;
-        }
-    };
+    let mut point = |t: f64, v: i128| pts.push(t, v);
     for (i, s) in samples.iter().enumerate() {
         if let Some(p) = i.checked_sub(1).map(|j| &samples[j]) {
             let (dt, dv) = ((s.t - p.t) as f64, s.v[k] - p.v[k]);
@@ -386,28 +412,13 @@ fn exact_points(
     if let Some(last) = samples.last() {
         point(t_end, last.v[k]);
     }
-    pts.trim_end().to_string()
+    pts.finish()
 }
 
 /// The points of lane `k` drawn from buckets: per bucket the first value at its start, the
 /// extremes in the order they occurred, the last value; booleans as steps.
-fn bucket_points(
-    b: &Buckets,
-    k: usize,
-    ramp: bool,
-    x: &dyn Fn(f64) -> f64,
-    y: &dyn Fn(i128) -> f64,
-    t_end: f64,
-) -> String {
-    let mut pts = String::new();
-    let mut previous = (f64::NAN, f64::NAN);
-    let mut point = |t: f64, v: i128| {
-        let p = ((x(t) * 10.0).round() / 10.0, (y(v) * 10.0).round() / 10.0);
-        if p != previous {
-            let _ = write!(pts, "{:.1},{:.1} ", p.0, p.1);
-            previous = p;
-        }
-    };
+fn bucket_points(b: &Buckets, k: usize, ramp: bool, mut pts: Points<'_>, t_end: f64) -> String {
+    let mut point = |t: f64, v: i128| pts.push(t, v);
     let mut prev: Option<i128> = None;
     for (i, slot) in b.slots.iter().enumerate() {
         let Some(bucket) = slot else { continue };
@@ -439,7 +450,7 @@ fn bucket_points(
         }
         prev = Some(last);
     }
-    pts.trim_end().to_string()
+    pts.finish()
 }
 
 fn render(d: &Diagram) -> String {
@@ -501,8 +512,8 @@ fn render(d: &Diagram) -> String {
         }
     }
     let points = |k: usize, ramp: bool, y: &dyn Fn(i128) -> f64| match &d.buckets {
-        Some(b) => bucket_points(b, k, ramp, &x, y, t_end),
-        None => exact_points(&d.exact, k, ramp, &x, y, t_end),
+        Some(b) => bucket_points(b, k, ramp, Points::new(&x, y), t_end),
+        None => exact_points(&d.exact, k, ramp, Points::new(&x, y), t_end),
     };
     let extent = |k: usize| -> (i128, i128) {
         match &d.buckets {

@@ -189,16 +189,7 @@ impl<R: Read> Reader<R> {
                         self.line += 1;
                         continue;
                     }
-                    let record = Record {
-                        buf: &self.buf,
-                        unquoted: &self.unquoted,
-                        fields: &self.fields,
-                        raw: (self.pos, line_end),
-                        line: self.line,
-                    };
-                    self.pos = next;
-                    self.line += 1;
-                    return Ok(Some(record));
+                    return Ok(Some(self.emit(line_end, next, 1)));
                 }
                 None if self.pos == self.end && self.eof => return Ok(None),
                 None if self.quote_seen => {}
@@ -216,9 +207,7 @@ impl<R: Read> Reader<R> {
                 self.fill()?;
                 continue;
             };
-            let line = &self.buf[self.pos..newline];
-            let content = trim(line.strip_suffix(b"\r").unwrap_or(line));
-            if content.is_empty() || content[0] == b'#' {
+            if blank_or_comment(&self.buf[self.pos..newline]) {
                 self.pos = (newline + 1).min(self.end);
                 self.line += 1;
                 continue;
@@ -227,16 +216,7 @@ impl<R: Read> Reader<R> {
             self.unquoted.clear();
             match self.parse_quoted() {
                 Ok((raw_end, next, lines)) => {
-                    let record = Record {
-                        buf: &self.buf,
-                        unquoted: &self.unquoted,
-                        fields: &self.fields,
-                        raw: (self.pos, raw_end),
-                        line: self.line,
-                    };
-                    self.pos = next;
-                    self.line += lines;
-                    return Ok(Some(record));
+                    return Ok(Some(self.emit(raw_end, next, lines)));
                 }
                 Err(Incomplete::Bad(e)) => return Err(Box::new(e)),
                 Err(Incomplete::NeedMore) if self.eof => {
@@ -247,6 +227,21 @@ impl<R: Read> Reader<R> {
                 }
                 Err(Incomplete::NeedMore) => self.fill()?,
             }
+        }
+    }
+
+    /// The record read at `self.pos`, its text ending at `raw_end`; the next one starts at
+    /// `next`, `lines` lines further.
+    fn emit(&mut self, raw_end: usize, next: usize, lines: u64) -> Record<'_> {
+        let (start, line) = (self.pos, self.line);
+        self.pos = next;
+        self.line += lines;
+        Record {
+            buf: &self.buf,
+            unquoted: &self.unquoted,
+            fields: &self.fields,
+            raw: (start, raw_end),
+            line,
         }
     }
 
@@ -309,8 +304,7 @@ impl<R: Read> Reader<R> {
         match self.buf.get(self.pos) {
             None => true,
             Some(b' ' | b'\t' | b'#' | b'\r' | b'\n') => {
-                let content = trim(&self.buf[self.pos..line_end]);
-                content.is_empty() || content[0] == b'#'
+                blank_or_comment(&self.buf[self.pos..line_end])
             }
             Some(_) => self.pos == line_end,
         }
@@ -336,15 +330,12 @@ impl<R: Read> Reader<R> {
                     match memchr::memchr(b'"', &buf[i..]) {
                         None => {
                             if self.eof {
-                                return Err(Incomplete::Bad(TraceError::new(
-                                    Location::Cell {
-                                        line: open_line,
-                                        column: column(&self.fields),
-                                        name: format!("field {}", column(&self.fields)),
-                                    },
+                                return Err(field_error(
+                                    open_line,
+                                    column(&self.fields),
                                     "the quote opened here is never closed; a quoted cell ends \
                                      with `\"` (write a quote inside it as `\"\"`)",
-                                )));
+                                ));
                             }
                             return Err(Incomplete::NeedMore);
                         }
@@ -387,18 +378,15 @@ impl<R: Read> Reader<R> {
                         let n = self.fields.len();
                         let end = memchr::memchr3(b',', b'\n', b'\r', &buf[i..])
                             .map_or(buf.len(), |e| i + e);
-                        return Err(Incomplete::Bad(TraceError::new(
-                            Location::Cell {
-                                line: self.line + lines,
-                                column: n,
-                                name: format!("field {n}"),
-                            },
+                        return Err(field_error(
+                            self.line + lines,
+                            n,
                             format!(
                                 "`{}` after the closing quote; a quoted cell ends at its \
                                  closing `\"` (write a quote inside it as `\"\"`)",
                                 show(&buf[i..end])
                             ),
-                        )));
+                        ));
                     }
                 }
             } else {
@@ -413,18 +401,15 @@ impl<R: Read> Reader<R> {
                         let col = column(&self.fields);
                         let stop = memchr::memchr2(b',', b'\n', &buf[field_start..])
                             .map_or(buf.len(), |e| field_start + e);
-                        return Err(Incomplete::Bad(TraceError::new(
-                            Location::Cell {
-                                line: self.line + lines,
-                                column: col,
-                                name: format!("field {col}"),
-                            },
+                        return Err(field_error(
+                            self.line + lines,
+                            col,
                             format!(
                                 "stray quote in `{}`; a quote may only open a cell (blanks \
                                  before it allowed) and close it",
                                 show(trim(strip_cr(&buf[field_start..stop])))
                             ),
-                        )));
+                        ));
                     }
                     Some(b',') => {
                         push_copy(&mut self.unquoted, &mut self.fields, &buf[field_start..end]);
@@ -461,6 +446,25 @@ fn push_copy(unquoted: &mut Vec<u8>, fields: &mut Vec<Field>, text: &[u8]) {
         end: unquoted.len(),
         quoted: true,
     });
+}
+
+/// A malformed field: its line and column, and what is wrong (the header is not known to the
+/// reader, so the column is named by its number).
+fn field_error(line: u64, column: usize, message: impl Into<String>) -> Incomplete {
+    Incomplete::Bad(TraceError::new(
+        Location::Cell {
+            line,
+            column,
+            name: format!("field {column}"),
+        },
+        message,
+    ))
+}
+
+/// Whether a line (its line end excluded or not) is blank or a `#` comment.
+fn blank_or_comment(line: &[u8]) -> bool {
+    let content = trim(strip_cr(line));
+    content.is_empty() || content[0] == b'#'
 }
 
 fn strip_cr(b: &[u8]) -> &[u8] {

@@ -33,6 +33,7 @@ struct VcdObserver<W: Write> {
     writer: vcd::Writer<W>,
     signals: Vec<Signal>,
     time: Option<u64>,
+    rows: u64,
 }
 
 fn bits(v: i128, width: u32) -> impl Iterator<Item = vcd::Value> {
@@ -87,6 +88,7 @@ impl<W: Write> Observer for VcdObserver<W> {
     }
 
     fn step(&mut self, o: &Observation) -> Result<bool, Error> {
+        self.rows += 1;
         if self.time != Some(o.t) {
             self.writer.timestamp(o.t)?;
             self.time = Some(o.t);
@@ -127,19 +129,9 @@ pub fn export<R: Read, W: Write>(
         writer: vcd::Writer::new(out),
         signals: Vec::new(),
         time: None,
+        rows: 0,
     };
-    let mut rows = 0;
-    struct Counting<'a, W: Write>(&'a mut VcdObserver<W>, &'a mut u64);
-    impl<W: Write> Observer for Counting<'_, W> {
-        fn start(&mut self, c: &Columns) -> Result<(), Error> {
-            self.0.start(c)
-        }
-        fn step(&mut self, o: &Observation) -> Result<bool, Error> {
-            *self.1 += 1;
-            self.0.step(o)
-        }
-    }
-    observe(spec, presets, input, &mut Counting(&mut o, &mut rows))?;
+    observe(spec, presets, input, &mut o)?;
     o.writer.flush()?;
-    Ok(rows)
+    Ok(o.rows)
 }
