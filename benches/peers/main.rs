@@ -8,8 +8,20 @@
 //! cargo bench --bench peers -- "step TON"       # one group (the summary shows what ran)
 //! ```
 //!
-//! Timing: criterion runs every workload (`iter_custom`); the summary takes, per workload, the
-//! median time per iteration of its last 20 samples, divided by the steps of an iteration.
+//! Timing: criterion runs every workload for its own report. Then, group by group, a summary
+//! pass runs the forms of one block (or one plant) in turn, 15 rounds of 25 ms each, and keeps
+//! each form's fastest round: taken in turn, the forms meet the same load from other processes,
+//! so their ratios hold on a shared machine, where figures taken minutes apart do not. The
+//! summary table at the end prints those figures: ns per step (one call of one instance), or
+//! µs per scan of a plant.
+//!
+//! One-step workloads: 8 instances of the block, each fed the same stream of 1 024 steps
+//! (`common::step_stream`) from a different offset, called in turn as a scan calls its timers;
+//! every form builds its arguments from the same input bits in the timed loop. Bulk workloads:
+//! one scan of 10 048 TON (square-wave inputs, `common::ton_plant`), of 10 048 CTUD or CTU INT
+//! counters (random edges), and one 10 ms tick of 65 536 S5 timers (two thirds running, on
+//! mixed bases); their floor is a copy (`copy_from_slice`) of as many bytes as the optimized
+//! form's state.
 //!
 //! The peers, ported in [`rusty`] and [`matiec`]:
 //!
@@ -69,7 +81,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use common::{Step, AREA, BANK, SCANS, STEPS};
-use criterion::{Bencher, Criterion};
+use criterion::Criterion;
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
 };
@@ -120,65 +132,143 @@ macro_rules! peer_int {
 peer_int!(i16, i32, i64);
 
 // ---------------------------------------------------------------------------------------------
-// Timing: criterion drives every workload; each sample's time per unit is kept for the summary.
+// Timing: every workload is a routine that runs `iters` iterations and returns the time they
+// took. Criterion runs each one for its own report; then the summary pass runs the workloads of
+// each group in turn, round after round, and keeps each one's fastest round.
 
-/// Per workload (`group/name`), the time per unit (ns per step, or µs per scan) of every sample.
-static SAMPLES: Mutex<BTreeMap<String, Vec<f64>>> = Mutex::new(BTreeMap::new());
+/// One workload: a form of a block (or a copy) on a group's inputs.
+struct Workload<'a> {
+    name: String,
+    /// Time per iteration / `units` is the time per step (ns) or per scan (µs, with `scale`).
+    units: f64,
+    scale: f64,
+    run: Box<dyn FnMut(u64) -> Duration + 'a>,
+}
 
-/// How many of a workload's last samples the summary takes the median of (criterion's warm-up
-/// calls come first and are left out).
-const SUMMARY_SAMPLES: usize = 20;
-
-/// Runs `routine` (one iteration: `units` steps, or one scan) under criterion, timing it with
-/// `iter_custom` and recording each sample's time per unit, scaled by `scale` (1 for ns, 1e-3
-/// for µs).
-fn timed(b: &mut Bencher, key: &str, units: usize, scale: f64, mut routine: impl FnMut()) {
-    b.iter_custom(|iters| {
-        let start = Instant::now();
-        for _ in 0..iters {
-            routine();
+impl<'a> Workload<'a> {
+    /// A workload whose iteration is `routine`, timed as a whole.
+    fn plain(name: &str, units: usize, scale: f64, mut routine: impl FnMut() + 'a) -> Self {
+        Workload {
+            name: name.to_owned(),
+            units: units as f64,
+            scale,
+            run: Box::new(move |iters| {
+                let start = Instant::now();
+                for _ in 0..iters {
+                    routine();
+                }
+                start.elapsed()
+            }),
         }
-        let elapsed = start.elapsed();
-        record(key, elapsed, iters, units, scale);
-        elapsed
-    });
+    }
+
+    /// A workload that times itself (to leave an untimed restore out).
+    fn custom(name: &str, scale: f64, run: impl FnMut(u64) -> Duration + 'a) -> Self {
+        Workload {
+            name: name.to_owned(),
+            units: 1.0,
+            scale,
+            run: Box::new(run),
+        }
+    }
+
+    /// Time per unit of `iters` iterations.
+    fn per_unit(&mut self, iters: u64) -> f64 {
+        let t = (self.run)(iters);
+        t.as_nanos() as f64 / iters as f64 / self.units * self.scale
+    }
 }
 
-/// Like [`timed`], for routines that time themselves (to leave out an untimed restore).
-fn timed_custom(b: &mut Bencher, key: &str, scale: f64, mut routine: impl FnMut(u64) -> Duration) {
-    b.iter_custom(|iters| {
-        let elapsed = routine(iters);
-        record(key, elapsed, iters, 1, scale);
-        elapsed
-    });
+/// The summary figure of each workload (`group/name`): its fastest interleaved round.
+static RESULTS: Mutex<BTreeMap<String, f64>> = Mutex::new(BTreeMap::new());
+
+/// Rounds of the summary pass, and the time of one workload's turn in a round.
+const ROUNDS: usize = 15;
+const TURN: Duration = Duration::from_millis(25);
+
+/// Runs a group: each workload under criterion (its report), then the summary pass, which runs
+/// the group's workloads in turn for `ROUNDS` rounds and records each one's fastest round. Taken
+/// in turn, the forms of a block meet the same load from other processes, and the fastest of
+/// several rounds is the one least disturbed: on a shared machine the ratios come out steadier
+/// than from figures taken minutes apart.
+fn run_group(c: &mut Criterion, group: &str, mut workloads: Vec<Workload<'_>>) {
+    if !c_filter_matches(group) {
+        return;
+    }
+    let mut g = c.benchmark_group(group);
+    for w in workloads.iter_mut() {
+        g.bench_function(w.name.as_str(), |b| b.iter_custom(|iters| (w.run)(iters)));
+    }
+    g.finish();
+    // Iterations per turn, from one probe each.
+    let iters: Vec<u64> = workloads
+        .iter_mut()
+        .map(|w| {
+            let t = (w.run)(1).max(Duration::from_nanos(1));
+            (TURN.as_nanos() / t.as_nanos()).clamp(1, 1 << 20) as u64
+        })
+        .collect();
+    let mut best = vec![f64::INFINITY; workloads.len()];
+    for _ in 0..ROUNDS {
+        for ((w, &n), b) in workloads.iter_mut().zip(&iters).zip(best.iter_mut()) {
+            *b = b.min(w.per_unit(n));
+        }
+    }
+    let mut results = RESULTS.lock().expect("no panic while holding the lock");
+    for (w, b) in workloads.iter().zip(best) {
+        results.insert(format!("{group}/{}", w.name), b);
+    }
 }
 
-fn record(key: &str, elapsed: Duration, iters: u64, units: usize, scale: f64) {
-    let per_unit = elapsed.as_nanos() as f64 / iters as f64 / units as f64 * scale;
-    SAMPLES
+/// The filter given on the command line (`cargo bench --bench peers -- FILTER`), if any: a
+/// group runs when its name contains it (criterion's own filter is a regular expression; this
+/// one, for the summary pass, is a plain substring, which the group names in this file fit).
+fn c_filter_matches(group: &str) -> bool {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut filter = None;
+    let mut skip = false;
+    for a in &args {
+        if skip {
+            skip = false;
+            continue;
+        }
+        if a.starts_with("--") {
+            // Options with a value.
+            skip = matches!(
+                a.as_str(),
+                "--warm-up-time"
+                    | "--measurement-time"
+                    | "--sample-size"
+                    | "--save-baseline"
+                    | "--baseline"
+                    | "--profile-time"
+                    | "--noise-threshold"
+                    | "--confidence-level"
+                    | "--significance-level"
+                    | "--nresamples"
+                    | "--output-format"
+                    | "--color"
+                    | "--plotting-backend"
+                    | "--format"
+            );
+            continue;
+        }
+        filter = Some(a.clone());
+    }
+    filter.is_none_or(|f| f.split('|').any(|part| group.contains(part)))
+}
+
+/// The summary figure of a workload, if it ran.
+fn result(key: &str) -> Option<f64> {
+    RESULTS
         .lock()
         .expect("no panic while holding the lock")
-        .entry(key.to_owned())
-        .or_default()
-        .push(per_unit);
-}
-
-/// The median of a workload's last samples, if it ran.
-fn median(key: &str) -> Option<f64> {
-    let samples = SAMPLES.lock().expect("no panic while holding the lock");
-    let all = samples.get(key)?;
-    let mut last: Vec<f64> = all[all.len().saturating_sub(SUMMARY_SAMPLES)..].to_vec();
-    last.sort_by(f64::total_cmp);
-    let n = last.len();
-    Some(if n % 2 == 1 {
-        last[n / 2]
-    } else {
-        (last[n / 2 - 1] + last[n / 2]) / 2.0
-    })
+        .get(key)
+        .copied()
 }
 
 // ---------------------------------------------------------------------------------------------
-// One step: 1 024 steps of one block per iteration, the inputs drawn beforehand.
+// One step: 1 024 steps of each of 8 instances of one block per iteration.
 
 /// Instances of a block in a one-step workload, called in turn as a scan calls them.
 const INSTANCES: usize = 8;
@@ -220,18 +310,17 @@ impl Stream {
         }
     }
 
-    /// Times `step(instance, bits, now)` over the stream under criterion as workload `key`,
-    /// for `INSTANCES` instances made by `new`, each output passed to `black_box`.
-    fn bench<T, O>(
-        &self,
-        b: &mut Bencher,
-        key: &str,
+    /// The workload `name`: `step(instance, bits, now)` over the stream for `INSTANCES`
+    /// instances made by `new`, each output passed to `black_box`.
+    fn workload<'a, T: 'a, O>(
+        &'a self,
+        name: &str,
         new: impl Fn() -> T,
-        mut step: impl FnMut(&mut T, u8, u64) -> O,
-    ) {
+        mut step: impl FnMut(&mut T, u8, u64) -> O + 'a,
+    ) -> Workload<'a> {
         let mut instances: [T; INSTANCES] = core::array::from_fn(|_| new());
         let mut base = 0;
-        timed(b, key, STEPS * INSTANCES, 1.0, || {
+        Workload::plain(name, STEPS * INSTANCES, 1.0, move || {
             for (bits, &t) in self.bits.iter().zip(&self.times) {
                 let now = base + t;
                 for (instance, &bits) in instances.iter_mut().zip(bits) {
@@ -239,7 +328,7 @@ impl Stream {
                 }
             }
             base += self.span;
-        });
+        })
     }
 }
 
@@ -256,51 +345,33 @@ const IEC_PT_MS: i32 = 30;
 /// bit 2 for TONR).
 fn step_iec(c: &mut Criterion, stream: &Stream) {
     const PT: Time = Time::from_millis(IEC_PT_MS);
+    let input = |b: u8| IecInput::new(bit(b, 0), PT).with_reset(bit(b, 2));
     for kind in IecKind::ALL {
-        let group = format!("step {}", kind.name());
-        let mut g = c.benchmark_group(&group);
-        let input = |b: u8| IecInput::new(bit(b, 0), PT).with_reset(bit(b, 2));
-        g.bench_function("reference", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/reference"),
-                IecTimerRef::<u32>::new,
-                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
-            )
-        });
-        g.bench_function("optimized", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/optimized"),
-                IecTimer::new,
-                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
-            )
-        });
-        macro_rules! peer {
-            ($name:literal, $ty:ty) => {
-                g.bench_function($name, |b| {
-                    stream.bench(b, &format!("{group}/{}", $name), <$ty>::new, |t, x, now| {
-                        t.call(bit(x, 0), IEC_PT_MS, now as u32)
-                    })
-                });
-            };
+        let mut ws = vec![
+            stream.workload("reference", IecTimerRef::<u32>::new, move |t, x, now| {
+                t.call(kind, CpuTime::from_millis(now), input(x))
+            }),
+            stream.workload("optimized", IecTimer::new, move |t, x, now| {
+                t.call(kind, CpuTime::from_millis(now), input(x))
+            }),
+        ];
+        macro_rules! peers {
+            ($rusty:ty, $matiec:ty) => {{
+                ws.push(stream.workload("RuSTy", <$rusty>::new, |t, x, now| {
+                    t.call(bit(x, 0), IEC_PT_MS, now as u32)
+                }));
+                ws.push(stream.workload("matiec", <$matiec>::new, |t, x, now| {
+                    t.call(bit(x, 0), IEC_PT_MS, now as u32)
+                }));
+            }};
         }
         match kind {
-            IecKind::Ton => {
-                peer!("RuSTy", rusty::Ton);
-                peer!("matiec", matiec::Ton);
-            }
-            IecKind::Tof => {
-                peer!("RuSTy", rusty::Tof);
-                peer!("matiec", matiec::Tof);
-            }
-            IecKind::Tp => {
-                peer!("RuSTy", rusty::Tp);
-                peer!("matiec", matiec::Tp);
-            }
+            IecKind::Ton => peers!(rusty::Ton, matiec::Ton),
+            IecKind::Tof => peers!(rusty::Tof, matiec::Tof),
+            IecKind::Tp => peers!(rusty::Tp, matiec::Tp),
             IecKind::Tonr => {}
         }
-        g.finish();
+        run_group(c, &format!("step {}", kind.name()), ws);
     }
 }
 
@@ -318,45 +389,30 @@ fn step_counters(c: &mut Criterion, stream: &Stream) {
         pv: COUNTER_PV,
     };
     for kind in CounterKind::ALL {
-        let group = format!("step {}", kind.name());
-        let mut g = c.benchmark_group(&group);
-        g.bench_function("reference", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/reference"),
-                CounterRef::<i16>::new,
-                |t, x, _| t.call(kind, input(x)),
-            )
-        });
-        g.bench_function("optimized", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/optimized"),
-                Counter::<i16>::new,
-                |t, x, _| t.call(kind, input(x)),
-            )
-        });
-        macro_rules! peer {
-            ($name:literal, $ty:ty, $count:literal, $level:literal) => {
-                g.bench_function($name, |b| {
-                    stream.bench(b, &format!("{group}/{}", $name), <$ty>::new, |t, x, _| {
-                        t.call(bit(x, $count), bit(x, $level), COUNTER_PV)
-                    })
-                });
-            };
+        let mut ws = vec![
+            stream.workload("reference", CounterRef::<i16>::new, move |t, x, _| {
+                t.call(kind, input(x))
+            }),
+            stream.workload("optimized", Counter::<i16>::new, move |t, x, _| {
+                t.call(kind, input(x))
+            }),
+        ];
+        macro_rules! peers {
+            ($rusty:ty, $matiec:ty, $count:literal, $level:literal) => {{
+                ws.push(stream.workload("RuSTy", <$rusty>::new, |t, x, _| {
+                    t.call(bit(x, $count), bit(x, $level), COUNTER_PV)
+                }));
+                ws.push(stream.workload("matiec", <$matiec>::new, |t, x, _| {
+                    t.call(bit(x, $count), bit(x, $level), COUNTER_PV)
+                }));
+            }};
         }
         match kind {
-            CounterKind::Ctu => {
-                peer!("RuSTy", rusty::Ctu<i16>, 0, 2);
-                peer!("matiec", matiec::Ctu<i16>, 0, 2);
-            }
-            CounterKind::Ctd => {
-                peer!("RuSTy", rusty::Ctd<i16>, 1, 3);
-                peer!("matiec", matiec::Ctd<i16>, 1, 3);
-            }
+            CounterKind::Ctu => peers!(rusty::Ctu<i16>, matiec::Ctu<i16>, 0, 2),
+            CounterKind::Ctd => peers!(rusty::Ctd<i16>, matiec::Ctd<i16>, 1, 3),
             CounterKind::Ctud => {}
         }
-        g.finish();
+        run_group(c, &format!("step {}", kind.name()), ws);
     }
 }
 
@@ -366,28 +422,18 @@ fn step_s5(c: &mut Criterion, stream: &Stream) {
     const TV: S5Time = plc_timers::s5time!("S5T#50MS");
     let input = |b: u8| S5Input::new(bit(b, 0), bit(b, 2), TV);
     for kind in S5Kind::ALL {
-        let group = format!("step {}", kind.name());
-        let mut g = c.benchmark_group(&group);
-        g.bench_function("reference", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/reference"),
-                S5TimerRef::new,
-                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
-            )
-        });
-        g.bench_function("optimized", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/optimized"),
-                S5Timer::new,
-                |t, x, now| t.call(kind, CpuTime::from_millis(now), input(x)),
-            )
-        });
-        g.finish();
+        let ws = vec![
+            stream.workload("reference", S5TimerRef::new, move |t, x, now| {
+                t.call(kind, CpuTime::from_millis(now), input(x))
+            }),
+            stream.workload("optimized", S5Timer::new, move |t, x, now| {
+                t.call(kind, CpuTime::from_millis(now), input(x))
+            }),
+        ];
+        run_group(c, &format!("step {}", kind.name()), ws);
     }
     let pv = CounterPreset::new(5).expect("0..=999");
-    let input = |b: u8| S5CounterInput {
+    let input = move |b: u8| S5CounterInput {
         cu: bit(b, 0),
         cd: bit(b, 1),
         r: bit(b, 2),
@@ -396,25 +442,15 @@ fn step_s5(c: &mut Criterion, stream: &Stream) {
         pv,
     };
     for kind in S5CounterKind::ALL {
-        let group = format!("step {}", kind.name());
-        let mut g = c.benchmark_group(&group);
-        g.bench_function("reference", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/reference"),
-                S5CounterRef::new,
-                |t, x, _| t.call(kind, input(x)),
-            )
-        });
-        g.bench_function("optimized", |b| {
-            stream.bench(
-                b,
-                &format!("{group}/optimized"),
-                S5Counter::new,
-                |t, x, _| t.call(kind, input(x)),
-            )
-        });
-        g.finish();
+        let ws = vec![
+            stream.workload("reference", S5CounterRef::new, move |t, x, _| {
+                t.call(kind, input(x))
+            }),
+            stream.workload("optimized", S5Counter::new, move |t, x, _| {
+                t.call(kind, input(x))
+            }),
+        ];
+        run_group(c, &format!("step {}", kind.name()), ws);
     }
 }
 
@@ -423,13 +459,13 @@ fn step_s5(c: &mut Criterion, stream: &Stream) {
 
 /// A copy of `bytes` bytes from one buffer to another: the floor of a scan that reads and
 /// writes a state of that size once.
-fn copy_floor(b: &mut Bencher, key: &str, bytes: usize) {
+fn copy_floor<'a>(name: &str, bytes: usize) -> Workload<'a> {
     let src = vec![0x5Au8; bytes];
     let mut dst = vec![0u8; bytes];
-    timed(b, key, 1, 1e-3, || {
+    Workload::plain(name, 1, 1e-3, move || {
         dst.copy_from_slice(black_box(&src));
         black_box(&mut dst);
-    });
+    })
 }
 
 /// The clock of scan `k`: a scan every 10 ms.
@@ -446,81 +482,66 @@ fn bulk_ton(c: &mut Criterion) {
         .map(|s| s.clone().try_into().expect("BANK inputs"))
         .collect();
     let pt_ms: Vec<i32> = plant.pt.iter().map(|t| t.as_millis()).collect();
-    let group = "scan of 10 048 TON";
-    let mut g = c.benchmark_group(group);
+    let (pt, scans, pt_ms) = (&pt, &scans, &pt_ms);
     /// The per-instance loop: every timer called once, its outputs passed to `black_box`.
     macro_rules! per_instance {
-        ($name:literal, $new:expr, |$t:ident, $input:ident, $i:ident, $now:ident| $call:expr) => {
-            g.bench_function($name, |b| {
-                let mut timers = vec![$new; BANK];
-                let mut k = 0u64;
-                timed(b, &format!("{group}/{}", $name), 1, 1e-3, || {
-                    k += 1;
-                    let $now = scan_time(k);
-                    let inputs = &scans[k as usize % SCANS];
-                    for ($i, ($t, &$input)) in timers.iter_mut().zip(inputs.iter()).enumerate() {
-                        black_box($call);
-                    }
-                })
-            });
-        };
+        ($name:literal, $new:expr, |$t:ident, $input:ident, $i:ident, $now:ident| $call:expr) => {{
+            let mut timers = vec![$new; BANK];
+            let mut k = 0u64;
+            Workload::plain($name, 1, 1e-3, move || {
+                k += 1;
+                let $now = scan_time(k);
+                let inputs = &scans[k as usize % SCANS];
+                for ($i, ($t, &$input)) in timers.iter_mut().zip(inputs.iter()).enumerate() {
+                    black_box($call);
+                }
+            })
+        }};
     }
-    per_instance!(
-        "reference (IecTimerRef array)",
-        IecTimerRef::<u32>::new(),
-        |t, input, i, now| {
-            t.call(
-                IecKind::Ton,
-                CpuTime::from_millis(now),
-                IecInput::new(input, pt[i]),
-            )
-        }
-    );
-    per_instance!(
-        "optimized (IecTimer array)",
-        IecTimer::new(),
-        |t, input, i, now| {
-            t.call(
-                IecKind::Ton,
-                CpuTime::from_millis(now),
-                IecInput::new(input, pt[i]),
-            )
-        }
-    );
-    per_instance!("RuSTy (array)", rusty::Ton::new(), |t, input, i, now| {
-        t.call(input, pt_ms[i], now as u32)
-    });
-    per_instance!("matiec (array)", matiec::Ton::new(), |t, input, i, now| {
-        t.call(input, pt_ms[i], now as u32)
-    });
-    g.bench_function("optimized (TonBank)", |b| {
-        let mut bank = Box::new(TonBank::<BANK>::new());
-        let mut k = 0u64;
-        timed(b, &format!("{group}/optimized (TonBank)"), 1, 1e-3, || {
+    let mut bank = Box::new(TonBank::<BANK>::new());
+    let mut k = 0u64;
+    let ws = vec![
+        per_instance!(
+            "reference (IecTimerRef array)",
+            IecTimerRef::<u32>::new(),
+            |t, input, i, now| {
+                t.call(
+                    IecKind::Ton,
+                    CpuTime::from_millis(now),
+                    IecInput::new(input, pt[i]),
+                )
+            }
+        ),
+        per_instance!(
+            "optimized (IecTimer array)",
+            IecTimer::new(),
+            |t, input, i, now| {
+                t.call(
+                    IecKind::Ton,
+                    CpuTime::from_millis(now),
+                    IecInput::new(input, pt[i]),
+                )
+            }
+        ),
+        per_instance!("RuSTy (array)", rusty::Ton::new(), |t, input, i, now| {
+            t.call(input, pt_ms[i], now as u32)
+        }),
+        per_instance!("matiec (array)", matiec::Ton::new(), |t, input, i, now| {
+            t.call(input, pt_ms[i], now as u32)
+        }),
+        Workload::plain("optimized (TonBank)", 1, 1e-3, move || {
             k += 1;
             bank.scan(
                 CpuTime::from_millis(scan_time(k)),
                 &scans[k as usize % SCANS],
-                &pt,
+                pt,
             );
             black_box(&mut bank);
-        })
-    });
-    g.bench_function("copy of the TonBank state", |b| {
-        copy_floor(
-            b,
-            &format!("{group}/copy of the TonBank state"),
-            size_of::<TonBank<BANK>>(),
-        )
-    });
-    g.bench_function("copy of the IecTimer array", |b| {
-        copy_floor(
-            b,
-            &format!("{group}/copy of the IecTimer array"),
-            BANK * size_of::<IecTimer>(),
-        )
-    });
-    g.finish();
+        }),
+        copy_floor("copy of the TonBank state", size_of::<TonBank<BANK>>()),
+        copy_floor("copy of the IecTimer array", BANK * size_of::<IecTimer>()),
+    ];
+    run_group(c, "scan of 10 048 TON", ws);
 }
 
 fn bulk_counters(c: &mut Criterion, up_only: bool) {
@@ -528,105 +549,128 @@ fn bulk_counters(c: &mut Criterion, up_only: bool) {
         .into_iter()
         .map(|s| [s.cu, s.cd, s.r, s.ld].map(|v| v.try_into().expect("BANK inputs")))
         .collect();
+    let scans = &scans;
     let pv: i16 = 100;
     let (group, kind) = if up_only {
         ("bank of 10 048 CTU INT", CounterKind::Ctu)
     } else {
         ("bank of 10 048 CTUD INT", CounterKind::Ctud)
     };
-    let mut g = c.benchmark_group(group);
     macro_rules! per_instance {
-        ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {
-            g.bench_function($name, |b| {
-                let mut counters = vec![$new; BANK];
-                let mut k = 0usize;
-                timed(b, &format!("{group}/{}", $name), 1, 1e-3, || {
-                    k += 1;
-                    let $s = &scans[k % scans.len()];
-                    for ($i, $t) in counters.iter_mut().enumerate() {
-                        black_box($call);
-                    }
-                })
-            });
-        };
-    }
-    per_instance!(
-        "reference (CounterRef array)",
-        CounterRef::<i16>::new(),
-        |t, s, i| {
-            t.call(
-                kind,
-                CounterInput {
-                    cu: s[0][i],
-                    cd: s[1][i],
-                    r: s[2][i],
-                    ld: s[3][i],
-                    pv,
-                },
-            )
-        }
-    );
-    per_instance!(
-        "optimized (Counter array)",
-        Counter::<i16>::new(),
-        |t, s, i| {
-            t.call(
-                kind,
-                CounterInput {
-                    cu: s[0][i],
-                    cd: s[1][i],
-                    r: s[2][i],
-                    ld: s[3][i],
-                    pv,
-                },
-            )
-        }
-    );
-    if up_only {
-        per_instance!("RuSTy (array)", rusty::Ctu::<i16>::new(), |t, s, i| {
-            t.call(s[0][i], s[2][i], pv)
-        });
-        per_instance!("matiec (array)", matiec::Ctu::<i16>::new(), |t, s, i| {
-            t.call(s[0][i], s[2][i], pv)
-        });
-    }
-    g.bench_function("optimized (CounterBank)", |b| {
-        let mut bank = Box::new(CounterBank::<i16, BANK>::new());
-        let mut k = 0usize;
-        timed(
-            b,
-            &format!("{group}/optimized (CounterBank)"),
-            1,
-            1e-3,
-            || {
+        ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {{
+            let mut counters = vec![$new; BANK];
+            let mut k = 0usize;
+            Workload::plain($name, 1, 1e-3, move || {
                 k += 1;
-                let s = &scans[k % scans.len()];
-                bank.scan(
-                    &BankInputs {
-                        cu: &s[0],
-                        cd: &s[1],
-                        r: &s[2],
-                        ld: &s[3],
+                let $s = &scans[k % scans.len()];
+                for ($i, $t) in counters.iter_mut().enumerate() {
+                    black_box($call);
+                }
+            })
+        }};
+    }
+    let mut ws = vec![
+        per_instance!(
+            "reference (CounterRef array)",
+            CounterRef::<i16>::new(),
+            |t, s, i| {
+                t.call(
+                    kind,
+                    CounterInput {
+                        cu: s[0][i],
+                        cd: s[1][i],
+                        r: s[2][i],
+                        ld: s[3][i],
+                        pv,
                     },
-                    pv,
-                );
-                black_box(&mut bank);
-            },
-        )
-    });
-    g.bench_function("copy of the CounterBank state", |b| {
-        copy_floor(
-            b,
-            &format!("{group}/copy of the CounterBank state"),
-            size_of::<CounterBank<i16, BANK>>(),
-        )
-    });
-    g.finish();
+                )
+            }
+        ),
+        per_instance!(
+            "optimized (Counter array)",
+            Counter::<i16>::new(),
+            |t, s, i| {
+                t.call(
+                    kind,
+                    CounterInput {
+                        cu: s[0][i],
+                        cd: s[1][i],
+                        r: s[2][i],
+                        ld: s[3][i],
+                        pv,
+                    },
+                )
+            }
+        ),
+    ];
+    if up_only {
+        ws.push(per_instance!(
+            "RuSTy (array)",
+            rusty::Ctu::<i16>::new(),
+            |t, s, i| t.call(s[0][i], s[2][i], pv)
+        ));
+        ws.push(per_instance!(
+            "matiec (array)",
+            matiec::Ctu::<i16>::new(),
+            |t, s, i| t.call(s[0][i], s[2][i], pv)
+        ));
+    }
+    let mut bank = Box::new(CounterBank::<i16, BANK>::new());
+    let mut k = 0usize;
+    ws.push(Workload::plain(
+        "optimized (CounterBank)",
+        1,
+        1e-3,
+        move || {
+            k += 1;
+            let s = &scans[k % scans.len()];
+            bank.scan(
+                &BankInputs {
+                    cu: &s[0],
+                    cd: &s[1],
+                    r: &s[2],
+                    ld: &s[3],
+                },
+                pv,
+            );
+            black_box(&mut bank);
+        },
+    ));
+    ws.push(copy_floor(
+        "copy of the CounterBank state",
+        size_of::<CounterBank<i16, BANK>>(),
+    ));
+    run_group(c, group, ws);
 }
 
 /// Ticks between two restores of the timer area: few enough that the area stays about as busy
 /// as at the start (a tenth of the running 10 ms timers run out).
 const TICKS_PER_RESTORE: u64 = 100;
+
+/// A workload that runs `work` once per iteration on a copy of `original`, restored (untimed)
+/// every `TICKS_PER_RESTORE` iterations.
+fn restoring<'a, T: Clone + 'a>(
+    name: &str,
+    original: T,
+    mut work: impl FnMut(&mut T, u64) + 'a,
+) -> Workload<'a> {
+    let mut state = original.clone();
+    let mut k = 0u64;
+    Workload::custom(name, 1e-3, move |iters| {
+        let mut total = Duration::ZERO;
+        for _ in 0..iters {
+            k += 1;
+            if k % TICKS_PER_RESTORE == 0 {
+                state.clone_from(&original);
+            }
+            let start = Instant::now();
+            work(&mut state, k);
+            total += start.elapsed();
+            black_box(&mut state);
+        }
+        total
+    })
+}
 
 fn bulk_area(c: &mut Criterion) {
     let contents = common::area_contents(AREA);
@@ -658,74 +702,28 @@ fn bulk_area(c: &mut Criterion) {
         *w = TimerWord::from_state(s).expect("a valid state");
     }
     let area = Box::new(TimerMemory::<AREA>::from_words(*words, CpuTime::ZERO));
-    let group = "timer area of 65 536, one 10 ms tick";
-    let mut g = c.benchmark_group(group);
-    // `work` runs one tick; every TICKS_PER_RESTORE ticks the contents are restored, untimed.
-    fn restoring<T: Clone>(
-        b: &mut Bencher,
-        key: &str,
-        original: &T,
-        mut work: impl FnMut(&mut T, u64),
-    ) {
-        let mut state = original.clone();
-        let mut k = 0u64;
-        timed_custom(b, key, 1e-3, |iters| {
-            let mut total = Duration::ZERO;
-            for _ in 0..iters {
-                k += 1;
-                if k % TICKS_PER_RESTORE == 0 {
-                    state.clone_from(original);
+    let ws = vec![
+        restoring("reference (S5TimerRef array)", refs, |refs, _| {
+            // The OS tick of the 10 ms base: every timer of that base loses one unit.
+            for t in refs.iter_mut() {
+                if t.state().base == TimeBase::Ms10 {
+                    t.tick(1);
                 }
-                let start = Instant::now();
-                work(&mut state, k);
-                total += start.elapsed();
-                black_box(&mut state);
             }
-            total
-        });
-    }
-    g.bench_function("reference (S5TimerRef array)", |b| {
-        restoring(
-            b,
-            &format!("{group}/reference (S5TimerRef array)"),
-            &refs,
-            |refs, _| {
-                // The OS tick of the 10 ms base: every timer of that base loses one unit.
-                for t in refs.iter_mut() {
-                    if t.state().base == TimeBase::Ms10 {
-                        t.tick(1);
-                    }
-                }
-            },
-        )
-    });
-    g.bench_function("optimized (TimerMemory::tick)", |b| {
-        restoring(
-            b,
-            &format!("{group}/optimized (TimerMemory::tick)"),
-            &area,
-            |a, _| a.tick(TimeBase::Ms10, 1),
-        )
-    });
-    g.bench_function("optimized (TimerMemory::advance_to)", |b| {
-        restoring(
-            b,
-            &format!("{group}/optimized (TimerMemory::advance_to)"),
-            &area,
-            |a, k| {
-                // 10 ms later: the 10 ms tick, and every 10th call the 100 ms tick too.
-                a.advance_to(CpuTime::from_millis(10 * (k % TICKS_PER_RESTORE)))
-            },
-        )
-    });
-    g.bench_function("copy of the TimerMemory state", |b| {
+        }),
+        restoring("optimized (TimerMemory::tick)", area.clone(), |a, _| {
+            a.tick(TimeBase::Ms10, 1)
+        }),
+        restoring("optimized (TimerMemory::advance_to)", area, |a, k| {
+            // 10 ms later: the 10 ms tick, and every 10th call the 100 ms tick too.
+            a.advance_to(CpuTime::from_millis(10 * (k % TICKS_PER_RESTORE)))
+        }),
         copy_floor(
-            b,
-            &format!("{group}/copy of the TimerMemory state"),
+            "copy of the TimerMemory state",
             size_of::<TimerMemory<AREA>>(),
-        )
-    });
-    g.finish();
+        ),
+    ];
+    run_group(c, "timer area of 65 536, one 10 ms tick", ws);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -745,7 +743,7 @@ fn verdict(ok: Option<bool>) -> &'static str {
 
 fn summary() {
     println!();
-    println!("== Summary (median of the last {SUMMARY_SAMPLES} samples of each workload)");
+    println!("== Summary (per workload, the fastest of {ROUNDS} rounds in which the forms of a block run in turn)");
     println!();
     println!("One step, ns per step (1 024 steps of the same input stream per iteration):");
     println!();
@@ -759,7 +757,7 @@ fn summary() {
         .chain(S5CounterKind::ALL.iter().map(|k| k.name()))
         .collect();
     for block in blocks {
-        let get = |name: &str| median(&format!("step {block}/{name}"));
+        let get = |name: &str| result(&format!("step {block}/{name}"));
         let (r, o, ru, ma) = (
             get("reference"),
             get("optimized"),
@@ -828,7 +826,7 @@ fn summary() {
         ),
     ];
     for (group, reference, floor, forms) in bulk {
-        let get = |name: &str| median(&format!("{group}/{name}"));
+        let get = |name: &str| result(&format!("{group}/{name}"));
         let (r, f) = (get(reference), get(floor));
         println!(
             "| {group} | {reference} | {} | {} | 1.00x |",
@@ -855,7 +853,7 @@ fn summary() {
             verdict(value.map(ok))
         );
     };
-    let ratio = |a: &str, b: &str| median(a).zip(median(b)).map(|(a, b)| a / b);
+    let ratio = |a: &str, b: &str| result(a).zip(result(b)).map(|(a, b)| a / b);
     goal(
         "TonBank scan / copy of its state (<= 3x)",
         ratio(

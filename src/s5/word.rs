@@ -366,13 +366,16 @@ impl S5Timer {
 
 impl S5TimerOps for S5Timer {
     /// The ticks since the previous call are counted without a division instruction
-    /// ([`ticks_between_fast`]) and applied without a branch: [`TimerWord::tick`] leaves a
-    /// stopped timer as it is, which is what the reference's tick does with it.
+    /// ([`ticks_between_fast`]), and only for a running timer: a stopped one ignores them, as
+    /// the reference's tick does (its first test). Measured: the branch on the running bit
+    /// costs less than counting on every call (a timer runs for many calls in a row).
     #[inline]
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
-        let base = ((self.word.0 & BASE) >> 12) as usize;
-        let n = ticks_between_fast(self.last_call, now, base);
-        self.word = self.word.tick(n);
+        if self.word.is_running() {
+            let base = ((self.word.0 & BASE) >> 12) as usize;
+            let n = ticks_between_fast(self.last_call, now, base);
+            self.word = self.word.tick(n);
+        }
         self.last_call = now;
         self.word = self.word.execute(kind, input);
         self.word.output()
