@@ -318,19 +318,27 @@ impl Stream {
         new: impl Fn() -> T,
         mut step: impl FnMut(&mut T, u8, u64) -> O + 'a,
     ) -> Workload<'a> {
-        let mut instances: [T; INSTANCES] = core::array::from_fn(|_| new());
+        let mut instances: [Instance<T>; INSTANCES] = core::array::from_fn(|_| Instance(new()));
         let mut base = 0;
         Workload::plain(name, STEPS * INSTANCES, 1.0, move || {
             for (bits, &t) in self.bits.iter().zip(&self.times) {
                 let now = base + t;
                 for (instance, &bits) in instances.iter_mut().zip(bits) {
-                    black_box(step(instance, bits, now));
+                    black_box(step(&mut instance.0, bits, now));
                 }
             }
             base += self.span;
         })
     }
 }
+
+/// One instance's data, on a cache line of its own, as in a PLC each block has its instance
+/// data block: the instances of a one-step workload do not share lines, so that no form gains
+/// or loses by how many of its instances fit in one (two-byte S5 counters side by side let the
+/// compiler merge their loads across instances, and the merged load then waits for the
+/// previous step's stores).
+#[repr(align(64))]
+struct Instance<T>(T);
 
 /// Bit `i` of a step's input bits.
 #[inline(always)]
