@@ -156,9 +156,22 @@ pub fn parse_bool(cell: &[u8]) -> Option<bool> {
 }
 
 /// Parses a whole number of milliseconds, 0..=u64::MAX.
+#[inline(always)]
 pub fn parse_u64(cell: &[u8]) -> Option<u64> {
     if cell.is_empty() || cell.len() > 20 {
         return None;
+    }
+    if cell.len() < 20 {
+        // At most 19 digits: below 10^19 < 2^64, so no overflow is possible.
+        let mut v: u64 = 0;
+        for &b in cell {
+            let d = b.wrapping_sub(b'0');
+            if d > 9 {
+                return None;
+            }
+            v = v * 10 + u64::from(d);
+        }
+        return Some(v);
     }
     let mut v: u64 = 0;
     for &b in cell {
@@ -173,7 +186,7 @@ pub fn parse_u64(cell: &[u8]) -> Option<u64> {
 
 /// Parses an output cell of another implementation as a value of `kind`: a boolean as
 /// [`parse_bool`], an integer in decimal, a word as `W#16#` and 1 to 4 hex digits or decimal.
-#[inline]
+#[inline(always)]
 pub fn parse_value(kind: ValueKind, cell: &[u8]) -> Option<Value> {
     match kind {
         ValueKind::Bool => return parse_bool(cell).map(Value::Bool),
@@ -326,7 +339,7 @@ impl<F: Family> Engine<F> {
     }
 
     /// Reads `rec`'s inputs and executes the block once.
-    #[inline]
+    #[inline(always)]
     fn step(&mut self, rec: &Record<'_>) -> Result<Row<F>, Box<TraceError>> {
         let width = self.layout.names.len();
         if rec.len() != width {
@@ -664,39 +677,20 @@ fn chosen_outputs(block: Block, outputs: Option<&[&str]>) -> Result<Vec<usize>, 
     Ok(chosen)
 }
 
-/// The last [`CONTEXT_ROWS`] rows: line, the start of the text, the reference's outputs; in
-/// fixed slots, so that keeping them costs no allocation.
-struct Context {
-    slots: [(u64, [u8; CONTEXT_TEXT], usize, Option<Outputs>); CONTEXT_ROWS],
-    next: usize,
-}
-
-impl Context {
-    fn new() -> Context {
-        Context {
-            slots: [(0, [0; CONTEXT_TEXT], 0, None); CONTEXT_ROWS],
-            next: 0,
-        }
-    }
-
-    #[inline]
-    fn push(&mut self, line: u64, text: &[u8], values: Outputs) {
-        let slot = &mut self.slots[self.next % CONTEXT_ROWS];
-        let n = text.len().min(CONTEXT_TEXT);
-        slot.0 = line;
-        slot.1[..n].copy_from_slice(&text[..n]);
-        slot.2 = n;
-        slot.3 = Some(values);
-        self.next += 1;
-    }
-
-    /// The rows, oldest first.
-    fn rows(&self) -> impl Iterator<Item = (u64, &[u8], &Outputs)> {
-        (0..CONTEXT_ROWS).filter_map(move |k| {
-            let (line, text, n, values) = &self.slots[(self.next + k) % CONTEXT_ROWS];
-            values.as_ref().map(|v| (*line, &text[..*n], v))
+/// The values of the `compared` (column, output) cells of a row's text, as far as they can be
+/// read back.
+fn values_of(block: Block, compared: &[(usize, usize)], text: &[u8]) -> Vec<(&'static str, Value)> {
+    let mut reader = Reader::new(text);
+    let Ok(Some(rec)) = reader.next_record() else {
+        return Vec::new();
+    };
+    compared
+        .iter()
+        .filter_map(|&(column, o)| {
+            let port = block.outputs()[o];
+            parse_value(port.kind, rec.cell(column)).map(|v| (port.name, v))
         })
-    }
+        .collect()
 }
 
 fn check_family<F: Family, R: Read>(
@@ -740,7 +734,6 @@ fn check_family<F: Family, R: Read>(
             .collect(),
         difference: None,
     };
-    let mut context = Context::new();
     let mut found = [Value::Bool(false); super::family::MAX_OUTPUTS];
     let kinds: Vec<ValueKind> = compared
         .iter()
@@ -789,31 +782,42 @@ fn check_family<F: Family, R: Read>(
                     .map(|&(_, o)| (block.outputs()[o].name, values.as_slice()[o]))
                     .collect()
             };
-            let mut rows: Vec<ContextRow> = context
-                .rows()
-                .map(|(line, text, values)| ContextRow {
-                    line,
-                    text: show(text),
-                    reference: shown(values),
-                })
-                .collect();
-            rows.push(ContextRow {
+            let this = ContextRow {
                 line: rec.line(),
                 text: show(&rec.raw()[..rec.raw().len().min(CONTEXT_TEXT)]),
                 reference: shown(&values),
-            });
+            };
+            let found = show(rec.cell(column));
+            // The rows before it agree with the reference: their values are read back from
+            // their text, which the reader kept.
+            let header_line = engine.layout.line;
+            let recent: Vec<(u64, &[u8])> = reader
+                .recent()
+                .filter(|&(line, _)| line > header_line)
+                .collect();
+            let mut rows: Vec<ContextRow> = recent[..recent.len().saturating_sub(1)]
+                .iter()
+                .rev()
+                .take(CONTEXT_ROWS)
+                .rev()
+                .map(|&(line, text)| ContextRow {
+                    line,
+                    text: show(&text[..text.len().min(CONTEXT_TEXT)]),
+                    reference: values_of(block, &compared, text),
+                })
+                .collect();
+            rows.push(this);
             report.difference = Some(Difference {
-                line: rec.line(),
+                line: rows[rows.len() - 1].line,
                 column: column + 1,
                 output: block.outputs()[o].name,
                 expected: values.as_slice()[o],
-                found: show(rec.cell(column)),
+                found,
                 why,
                 context: rows,
             });
             break;
         }
-        context.push(rec.line(), rec.raw(), values);
     }
     Ok(report)
 }

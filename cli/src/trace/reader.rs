@@ -20,6 +20,12 @@ pub const MAX_RECORD: usize = 64 << 20;
 
 const INITIAL_BUFFER: usize = 64 << 10;
 
+/// How many recent records the reader keeps ([`Reader::recent`]).
+pub const HISTORY: usize = 4;
+
+/// The most bytes the kept records may take.
+pub const KEEP_LIMIT: usize = 16 << 10;
+
 /// One field of the record: a range of the input buffer, or (quoted fields) of the unquoted copy.
 #[derive(Clone, Copy, Debug)]
 struct Field {
@@ -54,7 +60,7 @@ impl<'a> Record<'a> {
         self.fields.is_empty()
     }
 
-    #[inline]
+    #[inline(always)]
     /// Field `i` (0-based) as its bytes, unquoted, blanks kept; empty when there is no such field.
     pub fn field(&self, i: usize) -> &'a [u8] {
         match self.fields.get(i) {
@@ -64,7 +70,7 @@ impl<'a> Record<'a> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     /// Field `i` without the blanks (spaces, tabs) around it.
     pub fn cell(&self, i: usize) -> &'a [u8] {
         trim(self.field(i))
@@ -77,7 +83,7 @@ impl<'a> Record<'a> {
 }
 
 /// `bytes` without leading and trailing spaces and tabs.
-#[inline]
+#[inline(always)]
 pub fn trim(bytes: &[u8]) -> &[u8] {
     let blank = |b: &u8| *b == b' ' || *b == b'\t';
     let start = bytes.iter().position(|b| !blank(b)).unwrap_or(bytes.len());
@@ -110,6 +116,10 @@ pub struct Reader<R> {
     at_start: bool,
     /// Whether the last [`Reader::scan_line`] stopped at a quote.
     quote_seen: bool,
+    /// The spans (start, end, line) of the last records, a ring; `kept` of them are valid.
+    history: [(usize, usize, u64); HISTORY],
+    next_kept: usize,
+    kept: usize,
     fields: Vec<Field>,
     unquoted: Vec<u8>,
 }
@@ -126,6 +136,9 @@ impl<R: Read> Reader<R> {
             line: 1,
             at_start: true,
             quote_seen: false,
+            history: [(0, 0, 0); HISTORY],
+            next_kept: 0,
+            kept: 0,
             fields: Vec::new(),
             unquoted: Vec::new(),
         }
@@ -134,10 +147,21 @@ impl<R: Read> Reader<R> {
     /// Reads more input after the unconsumed bytes; makes room first (moving the unconsumed
     /// bytes to the front, or growing the buffer up to [`MAX_RECORD`]).
     fn fill(&mut self) -> Result<(), TraceError> {
-        if self.pos > 0 {
-            self.buf.copy_within(self.pos..self.end, 0);
-            self.end -= self.pos;
-            self.pos = 0;
+        // Keep the recent records in the buffer when they are small; drop them rather than
+        // grow the buffer for them.
+        let oldest = (self.kept > 0)
+            .then(|| self.history[(self.next_kept + HISTORY - self.kept) % HISTORY].0);
+        let keep = match oldest {
+            Some(start) if self.pos - start <= KEEP_LIMIT => start,
+            _ => {
+                self.kept = 0;
+                self.pos
+            }
+        };
+        self.compact(keep);
+        if self.end == self.buf.len() && self.kept > 0 {
+            self.kept = 0;
+            self.compact(self.pos);
         }
         if self.end == self.buf.len() {
             if self.buf.len() >= MAX_RECORD {
@@ -169,7 +193,33 @@ impl<R: Read> Reader<R> {
         }
     }
 
+    /// Moves the bytes from `from` on to the front of the buffer.
+    fn compact(&mut self, from: usize) {
+        if from == 0 {
+            return;
+        }
+        self.buf.copy_within(from..self.end, 0);
+        self.end -= from;
+        self.pos -= from;
+        for h in &mut self.history {
+            h.0 = h.0.saturating_sub(from);
+            h.1 = h.1.saturating_sub(from);
+        }
+    }
+
+    /// The last records read (up to [`HISTORY`], the most recent last), line and text as
+    /// written, as long as they were at most [`KEEP_LIMIT`] bytes together: what `check`
+    /// shows before a difference, kept without copying each row.
+    pub fn recent(&self) -> impl Iterator<Item = (u64, &[u8])> {
+        (0..self.kept).map(move |k| {
+            let (start, end, line) =
+                self.history[(self.next_kept + HISTORY - self.kept + k) % HISTORY];
+            (line, &self.buf[start..end])
+        })
+    }
+
     /// The next record, or `None` at the end of the input.
+    #[inline(always)]
     pub fn next_record(&mut self) -> Result<Option<Record<'_>>, Box<TraceError>> {
         loop {
             if self.at_start {
@@ -232,8 +282,12 @@ impl<R: Read> Reader<R> {
 
     /// The record read at `self.pos`, its text ending at `raw_end`; the next one starts at
     /// `next`, `lines` lines further.
+    #[inline(always)]
     fn emit(&mut self, raw_end: usize, next: usize, lines: u64) -> Record<'_> {
         let (start, line) = (self.pos, self.line);
+        self.history[self.next_kept] = (start, raw_end, line);
+        self.next_kept = (self.next_kept + 1) % HISTORY;
+        self.kept = (self.kept + 1).min(HISTORY);
         self.pos = next;
         self.line += lines;
         Record {
@@ -248,7 +302,7 @@ impl<R: Read> Reader<R> {
     /// Splits the line at `self.pos` into fields if it is complete in the buffer and has no
     /// quote: returns the end of its text (CR excluded) and the start of the next line. `None`
     /// when it needs more input, or (with `quote_seen`) when it has a quote.
-    #[inline]
+    #[inline(always)]
     fn scan_line(&mut self) -> Option<(usize, usize)> {
         self.quote_seen = false;
         self.fields.clear();
@@ -554,6 +608,34 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The recent records stay readable across refills of the buffer.
+    #[test]
+    fn recent_records_survive_refills() {
+        let input: Vec<u8> = (0..50)
+            .flat_map(|i| format!("{i},x{i}\n").into_bytes())
+            .collect();
+        struct Slow<'a>(&'a [u8]);
+        impl Read for Slow<'_> {
+            fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+                let n = self.0.len().min(3).min(out.len());
+                out[..n].copy_from_slice(&self.0[..n]);
+                self.0 = &self.0[n..];
+                Ok(n)
+            }
+        }
+        let mut r = Reader::new(Slow(&input));
+        let mut n = 0u64;
+        while r.next_record().expect("valid").is_some() {
+            n += 1;
+            let recent: Vec<(u64, Vec<u8>)> = r.recent().map(|(l, t)| (l, t.to_vec())).collect();
+            assert_eq!(recent.len() as u64, n.min(HISTORY as u64));
+            for (line, text) in recent {
+                assert_eq!(text, format!("{},x{}", line - 1, line - 1).into_bytes());
+            }
+        }
+        assert_eq!(n, 50);
     }
 
     #[test]
