@@ -437,5 +437,31 @@ fn diagram_and_vcd_commands() {
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("option --from: --from 9 is after --to 3"));
+    let o = plc(
+        &[
+            &["diagram"][..],
+            &ton,
+            &["--from", "2500", "--to", "2500", "-o", &svg],
+        ]
+        .concat(),
+        "",
+    );
+    assert!(
+        o.status.success(),
+        "a window of one instant: {}",
+        stderr(&o)
+    );
+    // An output that cannot be written (a full device) is an error, unlike a closed pipe.
+    if std::path::Path::new("/dev/full").exists() {
+        let o = plc(&[&["vcd"][..], &ton, &["-o", "/dev/full"]].concat(), "");
+        assert_eq!(o.status.code(), Some(2));
+        assert!(
+            stderr(&o).contains("cannot write the output"),
+            "{}",
+            stderr(&o)
+        );
+        let o = plc(&[&["vectors"][..], &["/dev/full/x"]].concat(), "");
+        assert_eq!(o.status.code(), Some(2));
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -119,27 +119,30 @@ fn ton_q_rises_at_expiry_and_et_ramps() {
     );
 }
 
-/// A TON trace of `rows` rows, 1 ms apart, IN toggling every 700 ms, with one 1 ms glitch of IN
-/// at `glitch`.
-fn long_trace(rows: u64, glitch: u64) -> Vec<u8> {
+/// Glitches of IN (1 ms at 1) inside its long 0 stretches.
+const GLITCHES: [u64; 4] = [100_001, 333_333, 1_300_001, 1_777_777];
+/// Dips of IN (1 ms at 0) inside its long 1 stretches.
+const DIPS: [u64; 3] = [10_007, 1_010_003, 1_630_001];
+
+/// A TON trace of `rows` rows, 1 ms apart: IN is 1 for the first 50 000 ms of every 200 000 ms
+/// and 0 otherwise, but for the 1 ms glitches and dips.
+fn long_trace(rows: u64) -> Vec<u8> {
     let mut s = Vec::with_capacity(rows as usize * 12);
     s.extend_from_slice(b"t_ms,IN\n");
     for t in 0..rows {
-        let level = (t / 700) % 2 == 1 || t == glitch;
+        let level = (t % 200_000 < 50_000 && !DIPS.contains(&t)) || GLITCHES.contains(&t);
         s.extend_from_slice(format!("{t},{}\n", u8::from(level)).as_bytes());
     }
     s
 }
 
 /// CLI-DIAG-02: a 2 M-row trace is drawn from at most 2 x COLUMNS buckets (bounded memory,
-/// whatever the length), into an SVG under 5 MB, and a single 1 ms glitch in it is still drawn
-/// (a vertical bar in the IN waveform where it is).
+/// whatever the length), into an SVG under 5 MB, and every 1 ms glitch in it is still drawn (a
+/// vertical bar in the IN waveform where it is), and none where there is none.
 #[test]
 fn two_million_rows_bounded_and_no_edge_lost() {
     let rows = 2_000_000;
-    let glitch = 1_234_000; // IN is 0 around it (1234000 / 700 is even)
-    assert_eq!((glitch / 700) % 2, 0);
-    let trace = long_trace(rows, glitch);
+    let trace = long_trace(rows);
     let (svg, stats) = draw(
         BlockSpec::new(Block::Ton),
         &[("pt", "T#500MS")],
@@ -156,17 +159,37 @@ fn two_million_rows_bounded_and_no_edge_lost() {
     assert!(svg.len() < 5_000_000, "{} bytes", svg.len());
     assert!(svg.len() < 500_000, "{} bytes", svg.len());
     let t_end = (rows - 1) as f64 * 1.08;
-    let gx = x_of(glitch as f64, 0.0, t_end);
     let input = polyline(&svg, "signal", "IN");
     let (lo, hi) = input
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let near: Vec<&(f64, f64)> = input.iter().filter(|p| (p.0 - gx).abs() < 1.5).collect();
+    let levels_near = |t: u64| -> (bool, bool) {
+        let x = x_of(t as f64, 0.0, t_end);
+        let near: Vec<&(f64, f64)> = input.iter().filter(|p| (p.0 - x).abs() < 1.5).collect();
+        (
+            near.iter().any(|p| p.1 == lo),
+            near.iter().any(|p| p.1 == hi),
+        )
+    };
+    for glitch in GLITCHES {
+        assert_eq!(
+            levels_near(glitch),
+            (true, true),
+            "the glitch at {glitch} ms"
+        );
+    }
+    for quiet in [150_000, 750_000, 1_550_000] {
+        assert_eq!(levels_near(quiet), (false, true), "no glitch at {quiet} ms");
+    }
+    // ET ramps up to PT in every high stretch: the ramp reaches the preset line.
+    let et = polyline(&svg, "ramp", "ET");
+    let top = et.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+    let preset = polyline(&svg, "preset", "PT");
     assert!(
-        near.iter().any(|p| p.1 == lo) && near.iter().any(|p| p.1 == hi),
-        "the glitch at x = {gx}: {near:?}"
+        (top - preset[0].1).abs() < 0.06,
+        "ET reaches PT: {top} vs {}",
+        preset[0].1
     );
-    // Memory: the buckets are fixed-size; the held count bounds them (see diagram.rs).
 }
 
 /// CLI-DIAG-02: `--from/--to` draw only that window, starting from the state the rows before
