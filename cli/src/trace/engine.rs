@@ -2,7 +2,7 @@
 //! rows, and the three ways a trace is consumed: [`run`] (write the reference outputs),
 //! [`check`] (compare another implementation's outputs) and [`observe`] (hand each step to a
 //! diagram or a VCD writer). All three are generic over the [`Family`] that
-//! [`dispatch`](super::family::dispatch) chooses.
+//! [`dispatch`] chooses.
 
 use std::fmt;
 use std::io::{Read, Write};
