@@ -169,6 +169,40 @@ fn run_writes_the_rows_before_an_error() {
     assert!(stderr(&o).contains("line 4, column 2 (IN)"));
 }
 
+/// CLI-RUN-02: `run` streams: output appears while the input is still open.
+#[test]
+fn run_streams_before_the_input_ends() {
+    use std::io::{Read, Write};
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_plc-timers"))
+        .args(["run", "TON", "--pt", "5"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("starts");
+    let mut stdin = child.stdin.take().expect("stdin");
+    let mut stdout = child.stdout.take().expect("stdout");
+    let (tx, rx) = std::sync::mpsc::channel();
+    let reader = std::thread::spawn(move || {
+        let mut first = [0u8; 13];
+        let got = stdout.read_exact(&mut first).is_ok();
+        let _ = tx.send(got);
+        let _ = std::io::copy(&mut stdout, &mut std::io::sink());
+    });
+    // More than a block of output, and the input stays open.
+    let mut trace = String::from("t_ms,IN\n");
+    for t in 0..20_000 {
+        trace.push_str(&format!("{t},1\n"));
+    }
+    stdin.write_all(trace.as_bytes()).expect("write");
+    stdin.flush().expect("flush");
+    let streamed = rx.recv_timeout(std::time::Duration::from_secs(20));
+    drop(stdin);
+    let _ = child.wait();
+    let _ = reader.join();
+    assert_eq!(streamed, Ok(true), "output before the end of the input");
+}
+
 /// CLI-RUN-02: writing to a pipe that closes early (`| head`) ends quietly with status 0.
 #[test]
 fn closed_pipe_ends_quietly() {
@@ -380,6 +414,31 @@ fn vectors_command() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stdout(&o).starts_with("wrote "));
     assert!(dir.join("README.txt").is_file());
+    // Each vector's own check command replays it.
+    let all = plc_timers_cli::trace::vectors::all().expect("vectors");
+    for v in all
+        .iter()
+        .filter(|v| v.file == "limits.csv" || v.file == "fr.csv")
+        .take(6)
+    {
+        let command = v.check_command();
+        let words: Vec<&str> = command.split_whitespace().collect();
+        assert_eq!(words[..2], ["plc-timers", "check"]);
+        let path = dir
+            .join(words[words.len() - 1])
+            .to_string_lossy()
+            .into_owned();
+        let mut args = words[1..words.len() - 1].to_vec();
+        args.push(&path);
+        let o = plc(&args, "");
+        assert_eq!(o.status.code(), Some(0), "{command}: {}", stderr(&o));
+    }
+    assert!(all
+        .iter()
+        .any(|v| v.check_command() == "plc-timers check CTUD --type SINT CTUD-SINT/limits.csv"));
+    assert!(all
+        .iter()
+        .any(|v| v.check_command() == "plc-timers check S_CU S_CU/fr.csv"));
     for (args, file) in [
         (&["check", "S_ODTS"][..], dir.join("S_ODTS/random-07.csv")),
         (

@@ -160,6 +160,22 @@ fn cli_check_every_flipped_cell_is_found() {
     }
 }
 
+/// CLI-CHECK-01: `--outputs` names each output once whatever its spelling; an empty list or an
+/// unknown name is bad input at the option.
+#[test]
+fn cli_check_output_selection() {
+    let trace = &b"t_ms,IN,Q,ET\n0,1,0,0\n5,1,1,5\n"[..];
+    let report = check(ton(), &[("pt", "5")], Some(&["q", "Q", " et"]), trace).expect("valid");
+    assert_eq!(report.compared, ["Q", "ET"]);
+    assert_eq!((report.rows, report.difference), (2, None));
+    let report = check(ton(), &[("pt", "5")], Some(&["ET"]), trace).expect("valid");
+    assert_eq!(report.compared, ["ET"]);
+    for outputs in [&[][..], &["CV"]] {
+        let e = check(ton(), &[("pt", "5")], Some(outputs), trace).expect_err("bad --outputs");
+        assert_eq!(e.location, Location::Option("outputs"), "{e}");
+    }
+}
+
 /// Bytes that look like traces: a header of TON's columns, then rows of small tokens.
 fn csvish() -> impl Strategy<Value = Vec<u8>> {
     let token = prop_oneof![

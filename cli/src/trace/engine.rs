@@ -401,7 +401,8 @@ impl<F: Family> Engine<F> {
                 )));
             }
         };
-        let last = if self.rows == 0 { 0 } else { self.last };
+        // 0 before the first row, as the blocks' own previous call.
+        let last = self.last;
         let output = self.family.call(t, Signals(signals), preset);
         self.last = t;
         self.rows += 1;

@@ -360,7 +360,7 @@ impl<R: Read> Reader<R> {
             Some(b' ' | b'\t' | b'#' | b'\r' | b'\n') => {
                 blank_or_comment(&self.buf[self.pos..line_end])
             }
-            Some(_) => self.pos == line_end,
+            Some(_) => false,
         }
     }
 
