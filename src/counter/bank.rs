@@ -111,26 +111,27 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
                 .zip(inputs.r.iter().zip(inputs.ld.iter())),
         );
         for ((cv, edges), ((&cu, &cd), (&r, &ld))) in lanes {
+            // The edges as 0/1 bytes (the memory of CU in bit 0, of CD in bit 1), computed
+            // with byte arithmetic, which stays in the byte lanes of the vectors.
             let e = *edges;
-            let up = cu & (e & CU_PREV == 0);
-            let down = cd & (e & CD_PREV == 0);
+            let up = u8::from(cu) & !e & CU_PREV;
+            let down = u8::from(cd) & !(e >> 1) & 1;
             *edges = (u8::from(cu) * CU_PREV) | (u8::from(cd) * CD_PREV);
             let v = *cv;
-            let inc = v.saturating_inc();
-            let dec = v.saturating_dec();
-            let counted = if up & !down {
-                inc
-            } else if down & !up {
-                dec
+            // `up > down`: up alone; `down > up`: down alone.
+            let counted = if up > down {
+                v.saturating_inc()
+            } else if down > up {
+                v.saturating_dec()
             } else {
                 v
             };
-            *cv = if r {
-                T::ZERO
-            } else if ld {
-                pv
-            } else {
+            *cv = if !(r | ld) {
                 counted
+            } else if r {
+                T::ZERO
+            } else {
+                pv
             };
         }
     }
