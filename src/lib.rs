@@ -66,6 +66,9 @@
 //! ## Features
 //! - `std`: `std::error::Error` for the error types. Without it the crate is `no_std` and
 //!   allocation-free.
+//! - `bolero`: generators (`bolero_generator::TypeGenerator`) beside the kinds, inputs and states,
+//!   generating only valid values; the proofs use them as property tests, Kani proofs and fuzz
+//!   targets. Off by default: without it the crate has no dependency at all.
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
