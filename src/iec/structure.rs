@@ -210,7 +210,9 @@ impl<C: ClockWord> IecTimerOf<C> {
 }
 
 /// `a` if `c`, else `b`, by arithmetic on the bits (`b ^ ((a ^ b) & mask)`) rather than by
-/// `if`, which LLVM may turn into a branch.
+/// `if`, which LLVM may turn into a branch. Exact: the mask is all ones or 0, so the u64 is
+/// `a.to_u64()` or `b.to_u64()`, a value below `2^BITS`, which `from_u64_wrapping` (the value
+/// modulo `2^BITS`) gives back as the clock word it came from.
 #[inline(always)]
 fn blend<C: ClockWord>(c: bool, a: C, b: C) -> C {
     let (a, b) = (a.to_u64(), b.to_u64());
@@ -292,18 +294,18 @@ impl<C: ClockWord> IecTimerOf<C> {
 }
 
 impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
-    /// One box call: the reference's decisions, taken on the inputs and on the timer's state
-    /// (the reference's functions are named below), and per path only the members that path
-    /// changes are written. Where the outcome depends on the time (expiry), selects instead of
-    /// branches. `kind` is a constant at every call site of a program, and the `match` on it
+    /// One box call. TP, TOF and TONR: the reference's decisions, taken on the inputs and on
+    /// the timer's state (the reference's functions are named below), and per path only the
+    /// members that path changes are written; where the outcome depends on the time
+    /// (expiry), selects instead of branches. TON: straight-line, see its arm. `kind` is a constant at every call site of a program, and the `match` on it
     /// disappears when the call is inlined. (An earlier version first tested for a quiet
     /// stopped timer and returned; that test cost more than it saved, and is gone: the quiet
-    /// cases are now the [`IecTimerOf::idle`] paths, which write one byte.)
+    /// cases are now the `idle` paths, which write one byte.)
     ///
-    /// Why each kind equals the reference ([`super::IecTimerRef`]): [`IecTimerOf::begin`] is
-    /// its `start` + `update` at one instant, [`IecTimerOf::advance`] its `update` of a running
-    /// timer, [`IecTimerOf::clear`] its `reset_and_stop`; a stopped timer's `update` changes
-    /// nothing, which is [`IecTimerOf::idle`]. Every path records the kind and IN, as the
+    /// Why each kind equals the reference ([`super::IecTimerRef`]): `begin` is
+    /// its `start` + `update` at one instant, `advance` its `update` of a running
+    /// timer, `clear` its `reset_and_stop`; a stopped timer's `update` changes
+    /// nothing, which is `idle`. Every path records the kind and IN, as the
     /// reference does after every call. A stopped timer has START = 0 already
     /// ([`IecState::is_valid`], which every structure satisfies).
     #[inline]
@@ -343,7 +345,15 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 self.flags = flags | if q { flag::Q } else { 0 };
                 IecOutput { q, et }
             }
-            // TON: IN = 0 resets; a rising IN starts; else update.
+            // TON: IN = 0 resets; a rising IN starts; else update. Written without a branch
+            // on IN or on the timer's state (`blend` and bit arithmetic), because TON is the
+            // timer of which a program has many: in an array of timers, IN and the state
+            // differ from one timer to the next and a branch on them is mispredicted about
+            // every other call. The reference's three cases are all computed: a rising IN
+            // replaces START and PT (its `start`), the update follows on the running timer
+            // (after a start it finds `elapsed = 0`, as the reference's), a stopped timer
+            // keeps ET and Q, and IN = 0 then forces START = ET = 0, Q = 0, stopped (its
+            // `reset_and_stop`; PT is unchanged on that path since a rise needs IN = 1).
             IecKind::Ton => {
                 let rise = on & !was_in;
                 let start = blend(rise, now, self.start);

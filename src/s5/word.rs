@@ -366,7 +366,7 @@ impl S5Timer {
 
 impl S5TimerOps for S5Timer {
     /// The ticks since the previous call are counted without a division instruction
-    /// ([`ticks_between_fast`]), and only for a running timer: a stopped one ignores them, as
+    /// (`ticks_between_fast`), and only for a running timer: a stopped one ignores them, as
     /// the reference's tick does (its first test). Measured: the branch on the running bit
     /// costs less than counting on every call (a timer runs for many calls in a row).
     #[inline]
