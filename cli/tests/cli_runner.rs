@@ -2,7 +2,10 @@
 //! totality on arbitrary bytes (reference and optimized agree on every trace both accept).
 
 use plc_timers::catalog::Block;
-use plc_timers_cli::trace::{check, run, BlockSpec, Error, Implementation, Location, TraceError};
+use plc_timers_cli::trace::diagram::{self, Window};
+use plc_timers_cli::trace::{
+    check, run, vcd, BlockSpec, Error, Implementation, Location, TraceError,
+};
 use proptest::prelude::*;
 
 fn ton() -> BlockSpec {
@@ -176,6 +179,41 @@ fn cli_check_output_selection() {
     }
 }
 
+/// CLI-DIAG-02: times at the end of the u64 range, in the exact and in the bucket mode, and a
+/// window of one instant draw without overflow.
+#[test]
+fn diagram_at_the_end_of_time() {
+    let top = u64::MAX - 5_000;
+    let mut trace = String::from("t_ms,IN\n");
+    for k in 0..5_000u64 {
+        trace.push_str(&format!("{},{}\n", top + k, k / 100 % 2));
+    }
+    for rows in [10, 5_000] {
+        let text: String = trace
+            .lines()
+            .take(rows + 1)
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let mut out = Vec::new();
+        diagram::svg(
+            ton(),
+            &[("pt", "T#5MS")],
+            text.as_bytes(),
+            Window::default(),
+            &mut out,
+        )
+        .expect("draws");
+        assert!(!String::from_utf8(out).expect("UTF-8").contains("NaN"));
+    }
+    let mut out = Vec::new();
+    let window = Window {
+        from: Some(3),
+        to: Some(3),
+    };
+    diagram::svg(ton(), &[("pt", "5")], PLAIN.as_bytes(), window, &mut out).expect("draws");
+    assert!(!String::from_utf8(out).expect("UTF-8").contains("NaN"));
+}
+
 /// Bytes that look like traces: a header of TON's columns, then rows of small tokens.
 fn csvish() -> impl Strategy<Value = Vec<u8>> {
     let token = prop_oneof![
@@ -229,6 +267,8 @@ proptest! {
                 prop_assert!(!e.message.is_empty());
             }
             let _ = check(spec, &presets, None, &bytes[..]);
+            let _ = diagram::svg(spec, &presets, &bytes[..], Window::default(), Vec::new());
+            let _ = vcd::export(spec, &presets, &bytes[..], Vec::new());
         }
     }
 }

@@ -187,7 +187,10 @@ struct Diagram {
     buckets: Option<Buckets>,
     /// The last row before the window: its values hold at the window's start.
     before: Option<Sample>,
-    first_t: Option<u64>,
+    /// The time every drawn time is relative to (`--from`, or the first drawn row): the
+    /// geometry is computed in offsets from it, which f64 resolves at any CPU time.
+    origin: Option<u64>,
+    /// The last drawn row's offset.
     last_t: u64,
     stats: Stats,
 }
@@ -216,17 +219,17 @@ impl Diagram {
         Sample { t: o.t, v, ramp }
     }
 
-    fn push(&mut self, s: Sample) {
-        self.first_t.get_or_insert(s.t);
+    fn push(&mut self, mut s: Sample) {
+        let origin = *self.origin.get_or_insert(self.window.from.unwrap_or(s.t));
+        s.t -= origin;
         self.last_t = s.t;
         self.stats.drawn += 1;
         match &mut self.buckets {
             Some(b) => b.add(&s),
             None if self.exact.len() < EXACT_ROWS => self.exact.push(s),
             None => {
-                let origin = self.window.from.unwrap_or(self.exact[0].t);
-                let span = self.window.to.map_or(s.t - origin, |to| to - origin);
-                let mut b = Buckets::new(origin, span);
+                let span = self.window.to.map_or(s.t, |to| to - origin);
+                let mut b = Buckets::new(0, span);
                 for e in self.exact.drain(..) {
                     b.add(&e);
                 }
@@ -308,13 +311,13 @@ pub fn svg<R: Read, W: Write>(
         exact: Vec::new(),
         buckets: None,
         before: None,
-        first_t: None,
+        origin: None,
         last_t: 0,
         stats: Stats::default(),
     };
     observe(spec, presets, input, &mut d)?;
     // A window past the trace's end still shows the state the trace left.
-    if d.first_t.is_none() {
+    if d.origin.is_none() {
         if let Some(b) = d.before.take() {
             d.push(b);
         }
@@ -422,7 +425,7 @@ fn bucket_points(b: &Buckets, k: usize, ramp: bool, mut pts: Points<'_>, t_end: 
     let mut prev: Option<i128> = None;
     for (i, slot) in b.slots.iter().enumerate() {
         let Some(bucket) = slot else { continue };
-        let start = (b.origin + i as u64 * b.width) as f64;
+        let start = b.origin.saturating_add((i as u64).saturating_mul(b.width)) as f64;
         let end = (start + b.width as f64).min(t_end);
         if let Some(p) = prev {
             point(start, p);
@@ -464,11 +467,16 @@ fn render(d: &Diagram) -> String {
         .count();
     let bools = d.lanes.len() - ramps;
     let height = TOP + bools as f64 * BOOL_LANE + ramps as f64 * VALUE_LANE + AXIS;
-    let t0 = d.window.from.or(d.first_t).unwrap_or(0) as f64;
-    let last = d.window.to.map_or(d.last_t as f64, |t| t as f64).max(t0);
+    // Offsets from the origin; the labels add it back.
+    let origin = d.origin.unwrap_or(0);
+    let t0 = 0.0;
+    let last = d
+        .window
+        .to
+        .map_or(d.last_t as f64, |t| t.saturating_sub(origin) as f64);
     let span = (last - t0).max(1.0);
     let t_end = if d.window.to.is_some() {
-        last
+        last.max(t0 + 1.0)
     } else {
         last + (span * 0.08).max(1.0)
     };
@@ -611,8 +619,13 @@ fn render(d: &Diagram) -> String {
         WIDTH - RIGHT
     );
     let step = tick_step(t_end - t0, 8.0);
-    let mut t = (t0 / step).ceil() * step;
-    while t <= t_end {
+    // Ticks on whole multiples of the step in absolute time, at most a dozen.
+    let step_ms = (step as u64).max(1);
+    let first = (origin.div_ceil(step_ms).saturating_mul(step_ms) - origin) as f64;
+    for t in (0..12).map(|k| first + f64::from(k) * step_ms as f64) {
+        if t > t_end {
+            break;
+        }
         let xt = x(t);
         let _ = writeln!(
             s,
@@ -620,9 +633,8 @@ fn render(d: &Diagram) -> String {
              <text x=\"{xt:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>",
             y + 5.0,
             y + 18.0,
-            t as u64
+            origin.saturating_add(t as u64)
         );
-        t += step;
     }
     let unit = if columns.timed { "t [ms]" } else { "row" };
     let _ = writeln!(
