@@ -110,21 +110,19 @@ impl Bucket {
     }
 }
 
-/// Buckets of `width` ms from `origin`; `None` where no row fell.
+/// Buckets of `width` ms from the diagram's origin (offset 0); `None` where no row fell.
 struct Buckets {
-    origin: u64,
     width: u64,
     slots: Vec<Option<Bucket>>,
 }
 
 impl Buckets {
-    fn new(origin: u64, span: u64) -> Buckets {
+    fn new(span: u64) -> Buckets {
         let mut width = 1u64;
         while span / width >= COLUMNS as u64 {
             width *= 2;
         }
         Buckets {
-            origin,
             width,
             slots: vec![None; 2 * COLUMNS],
         }
@@ -151,10 +149,10 @@ impl Buckets {
     }
 
     fn add(&mut self, s: &Sample) {
-        while (s.t - self.origin) / self.width >= self.slots.len() as u64 {
+        while s.t / self.width >= self.slots.len() as u64 {
             self.halve();
         }
-        let i = ((s.t - self.origin) / self.width) as usize;
+        let i = (s.t / self.width) as usize;
         match &mut self.slots[i] {
             Some(b) => b.add(s),
             slot => *slot = Some(Bucket::new(s)),
@@ -229,7 +227,7 @@ impl Diagram {
             None if self.exact.len() < EXACT_ROWS => self.exact.push(s),
             None => {
                 let span = self.window.to.map_or(s.t, |to| to - origin);
-                let mut b = Buckets::new(0, span);
+                let mut b = Buckets::new(span);
                 for e in self.exact.drain(..) {
                     b.add(&e);
                 }
@@ -425,7 +423,7 @@ fn bucket_points(b: &Buckets, k: usize, ramp: bool, mut pts: Points<'_>, t_end: 
     let mut prev: Option<i128> = None;
     for (i, slot) in b.slots.iter().enumerate() {
         let Some(bucket) = slot else { continue };
-        let start = b.origin.saturating_add((i as u64).saturating_mul(b.width)) as f64;
+        let start = (i as u64).saturating_mul(b.width) as f64;
         let end = (start + b.width as f64).min(t_end);
         if let Some(p) = prev {
             point(start, p);
