@@ -160,18 +160,19 @@ fn two_million_rows_bounded_and_no_edge_lost() {
     assert!(svg.len() < 500_000, "{} bytes", svg.len());
     let t_end = (rows - 1) as f64 * 1.08;
     let input = polyline(&svg, "signal", "IN");
-    let (lo, hi) = input
+    // SVG y grows downwards: the high level has the smallest y.
+    let (high, low) = input
         .iter()
         .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
     let levels_near = |t: u64| -> (bool, bool) {
         let x = x_of(t as f64, 0.0, t_end);
         let near: Vec<&(f64, f64)> = input.iter().filter(|p| (p.0 - x).abs() < 1.5).collect();
         (
-            near.iter().any(|p| p.1 == lo),
-            near.iter().any(|p| p.1 == hi),
+            near.iter().any(|p| p.1 == high),
+            near.iter().any(|p| p.1 == low),
         )
     };
-    for glitch in GLITCHES {
+    for glitch in GLITCHES.into_iter().chain(DIPS) {
         assert_eq!(
             levels_near(glitch),
             (true, true),
@@ -180,6 +181,13 @@ fn two_million_rows_bounded_and_no_edge_lost() {
     }
     for quiet in [150_000, 750_000, 1_550_000] {
         assert_eq!(levels_near(quiet), (false, true), "no glitch at {quiet} ms");
+    }
+    for quiet_high in [30_000, 1_025_000] {
+        assert_eq!(
+            levels_near(quiet_high),
+            (true, false),
+            "no dip at {quiet_high} ms"
+        );
     }
     // ET ramps up to PT in every high stretch: the ramp reaches the preset line.
     let et = polyline(&svg, "ramp", "ET");
