@@ -283,7 +283,7 @@ const fn unit_of(text: &[u8], from: usize, to: usize, days: bool) -> Option<Unit
             b'S' => Some(Unit::Second),
             _ => None,
         },
-        2 if first == b'M' && text[from + 1].to_ascii_uppercase() == b'S' => Some(Unit::Milli),
+        2 if first == b'M' && text[from + 1].eq_ignore_ascii_case(&b'S') => Some(Unit::Milli),
         _ => None,
     }
 }
