@@ -114,6 +114,8 @@ pub struct Reader<R> {
     /// The line of `buf[pos]`.
     line: u64,
     at_start: bool,
+    /// The longest record accepted.
+    limit: usize,
     /// Whether the last [`Reader::scan_line`] stopped at a quote.
     quote_seen: bool,
     /// The spans (start, end, line) of the last records, a ring; `kept` of them are valid.
@@ -127,8 +129,14 @@ pub struct Reader<R> {
 impl<R: Read> Reader<R> {
     /// A reader of `src`.
     pub fn new(src: R) -> Reader<R> {
+        Reader::with_limit(src, MAX_RECORD)
+    }
+
+    /// A reader of `src` that accepts records of up to `limit` bytes (at least 64 KiB).
+    pub fn with_limit(src: R, limit: usize) -> Reader<R> {
         Reader {
             src,
+            limit: limit.max(INITIAL_BUFFER),
             buf: vec![0; INITIAL_BUFFER],
             pos: 0,
             end: 0,
@@ -164,13 +172,13 @@ impl<R: Read> Reader<R> {
             self.compact(self.pos);
         }
         if self.end == self.buf.len() {
-            if self.buf.len() >= MAX_RECORD {
+            if self.buf.len() >= self.limit {
                 return Err(TraceError::new(
                     Location::Line(self.line),
-                    format!("the record is longer than {} MiB", MAX_RECORD >> 20),
+                    format!("the record is longer than {} KiB", self.limit >> 10),
                 ));
             }
-            self.buf.resize((self.buf.len() * 2).min(MAX_RECORD), 0);
+            self.buf.resize((self.buf.len() * 2).min(self.limit), 0);
         }
         loop {
             match self.src.read(&mut self.buf[self.end..]) {
@@ -640,9 +648,25 @@ mod tests {
 
     #[test]
     fn long_records_are_bounded() {
-        let mut long = b"a\n".to_vec();
-        long.extend(std::iter::repeat_n(b'x', MAX_RECORD + 10));
-        let e = records(&long, 1 << 20).expect_err("too long");
-        assert_eq!(e.location, Location::Line(2));
+        let limit = 256 << 10;
+        for (extra, ok) in [(0, true), (1, false), (100_000, false)] {
+            // A record of `limit + extra - 1` bytes and its line end.
+            let mut long = b"a\n".to_vec();
+            long.extend(std::iter::repeat_n(b'x', limit + extra - 1));
+            long.push(b'\n');
+            let mut r = Reader::with_limit(&long[..], limit);
+            let first = r.next_record().expect("the header").map(|h| h.line());
+            assert_eq!(first, Some(1));
+            match r.next_record() {
+                Ok(Some(rec)) => assert!(ok && rec.raw().len() == limit - 1),
+                Err(e) => {
+                    assert!(!ok);
+                    assert_eq!(e.location, Location::Line(2));
+                    assert!(e.message.contains("longer than 256 KiB"), "{e}");
+                }
+                Ok(None) => panic!("a record"),
+            }
+        }
+        assert_eq!(Reader::new(&b""[..]).limit, MAX_RECORD);
     }
 }
