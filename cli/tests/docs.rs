@@ -151,11 +151,10 @@ fn two_million_rows_bounded_and_no_edge_lost() {
     );
     assert_eq!(stats.rows, rows);
     assert!(!stats.exact);
-    assert!(
-        stats.held <= 2 * COLUMNS.max(EXACT_ROWS),
-        "held {}",
-        stats.held
-    );
+    // The most held at once: the exact rows before they fold into 2 x COLUMNS buckets.
+    assert_eq!(stats.held, EXACT_ROWS.max(2 * COLUMNS), "held");
+    // 2 M ms in at most 2 x 796 buckets: 2048 ms each.
+    assert_eq!(stats.bucket_ms, 2048);
     assert!(svg.len() < 5_000_000, "{} bytes", svg.len());
     assert!(svg.len() < 500_000, "{} bytes", svg.len());
     let t_end = (rows - 1) as f64 * 1.08;
@@ -224,6 +223,50 @@ fn window_zooms() {
         (et.last().expect("points").0 - (900.0 - 18.0)).abs() < 0.06,
         "{et:?}"
     );
+    // Windows that start and end on rows: each row drawn once, the one at --to included.
+    for (from, to, rows, drawn) in [(2000, 2500, 9, 4), (2000, 2499, 8, 3), (1999, 2000, 6, 2)] {
+        let window = Window {
+            from: Some(from),
+            to: Some(to),
+        };
+        let (_, stats) = draw(e.spec, &presets, e.text.as_bytes(), window);
+        assert_eq!((stats.rows, stats.drawn), (rows, drawn), "{from}..{to}");
+    }
+}
+
+/// CLI-DIAG-02: up to EXACT_ROWS rows are drawn exactly, one more is drawn from buckets whose
+/// width follows the span: the smallest power of two that gives fewer than COLUMNS buckets.
+#[test]
+fn exact_up_to_the_limit_then_buckets() {
+    let trace = long_trace(EXACT_ROWS as u64 + 1);
+    let text: String = String::from_utf8(trace).expect("UTF-8");
+    let upto =
+        |n: usize| -> String { text.lines().take(n + 1).map(|l| format!("{l}\n")).collect() };
+    let ton = BlockSpec::new(Block::Ton);
+    let (_, stats) = draw(
+        ton,
+        &[("pt", "T#500MS")],
+        upto(EXACT_ROWS).as_bytes(),
+        Window::default(),
+    );
+    assert!(stats.exact && stats.bucket_ms == 0 && stats.held == EXACT_ROWS);
+    let (_, stats) = draw(
+        ton,
+        &[("pt", "T#500MS")],
+        upto(EXACT_ROWS + 1).as_bytes(),
+        Window::default(),
+    );
+    assert!(!stats.exact);
+    // 2048 ms over 796 columns: 4 ms buckets (2048 / 2 = 1024 >= 796, 2048 / 4 = 512 < 796).
+    assert_eq!(stats.bucket_ms, 4);
+    // A window of the 2 M-row trace: 100 000 ms, so 128 ms buckets.
+    let long = long_trace(1_200_000);
+    let window = Window {
+        from: Some(1_000_000),
+        to: Some(1_100_000),
+    };
+    let (_, stats) = draw(ton, &[("pt", "T#500MS")], &long, window);
+    assert_eq!((stats.drawn, stats.bucket_ms), (100_001, 128));
 }
 
 /// CLI-VCD-01: the VCD of every example parses back with the `vcd` crate: a 1 ms timescale,

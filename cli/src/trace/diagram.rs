@@ -55,6 +55,8 @@ pub struct Stats {
     pub exact: bool,
     /// The most samples or buckets held at once.
     pub held: usize,
+    /// The width of a bucket in ms at the end (0 when drawn exactly).
+    pub bucket_ms: u64,
 }
 
 /// One row's lane values.
@@ -321,6 +323,7 @@ pub fn svg<R: Read, W: Write>(
         }
     }
     d.stats.exact = d.buckets.is_none();
+    d.stats.bucket_ms = d.buckets.as_ref().map_or(0, |b| b.width);
     let text = render(&d);
     out.write_all(text.as_bytes())?;
     out.flush()?;
