@@ -234,6 +234,45 @@ fn window_zooms() {
     }
 }
 
+/// CLI-DIAG-02: drawings from buckets are pinned too: a 6 000-row TONR trace whose PT column
+/// changes (a ramp, a step line for the preset), whole and through a window, against
+/// `cli/tests/data/*.svg` (`UPDATE_DOCS=1` redraws them).
+#[test]
+fn bucket_drawings_are_current() {
+    let mut trace = String::from("t_ms,IN,R,PT\n");
+    for t in 0..6_000u64 {
+        let input = u8::from(t % 900 < 500 || t % 1_700 == 1_000);
+        let reset = u8::from(t % 2_500 == 2_400);
+        let pt = if t < 3_000 { "T#700MS" } else { "T#300MS" };
+        trace.push_str(&format!("{t},{input},{reset},{pt}\n"));
+    }
+    let update = std::env::var_os("UPDATE_DOCS").is_some();
+    let tonr = BlockSpec::new(Block::Tonr);
+    for (name, window) in [
+        ("bucket", Window::default()),
+        (
+            "bucket-window",
+            Window {
+                from: Some(1_000),
+                to: Some(5_500),
+            },
+        ),
+    ] {
+        let (svg, stats) = draw(tonr, &[], trace.as_bytes(), window);
+        assert!(!stats.exact, "{name}");
+        let path = common::root().join(format!("cli/tests/data/{name}.svg"));
+        if update {
+            fs::write(&path, &svg).expect("write");
+        }
+        assert_eq!(
+            fs::read_to_string(&path).ok().as_deref(),
+            Some(svg.as_str()),
+            "{name}.svg is stale; redraw with UPDATE_DOCS=1"
+        );
+        assert!(svg.contains("TONR, PT changes"), "{name}");
+    }
+}
+
 /// CLI-DIAG-02: up to EXACT_ROWS rows are drawn exactly, one more is drawn from buckets whose
 /// width follows the span: the smallest power of two that gives fewer than COLUMNS buckets.
 #[test]
