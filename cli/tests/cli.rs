@@ -112,6 +112,8 @@ fn bad_input_names_line_and_column_exit_2() {
             "line 1, column 3 (Q): `Q` is an output of TON",
         ),
         (&["run", "TON", "--pt", "5"], "t_ms,IN,in\n", "column `in` appears twice"),
+        (&["run", "TON", "--pt", "5"], "t_ms,IN,PT,pt\n", "column `pt` appears twice"),
+        (&["run", "TONR", "--pt", "5"], "t_ms,R,IN,r\n", "column `r` appears twice"),
         (&["run", "TON", "--pt", "5"], "", "line 1: the trace is empty"),
         (&["run", "TON", "--pt", "5"], "\n# only a comment\n", "line 1: the trace is empty"),
         // Strict CSV.

@@ -943,6 +943,19 @@ mod tests {
         assert_eq!(parse_value(ValueKind::Word, b"161"), Some(Value::Word(161)));
         assert_eq!(parse_value(ValueKind::Int, b"-5"), Some(Value::Int(-5)));
         assert_eq!(parse_value(ValueKind::Int, b"abc"), None);
+        assert_eq!(parse_value(ValueKind::Int, b"+5"), Some(Value::Int(5)));
+        assert_eq!(parse_value(ValueKind::Int, b"-"), None);
+        assert_eq!(
+            parse_value(ValueKind::Int, b"-170141183460469231731687303715884105728"),
+            Some(Value::Int(i128::MIN))
+        );
+        assert_eq!(parse_value(ValueKind::Word, b"W#16#+1"), None);
+        assert_eq!(parse_value(ValueKind::Word, b"W#16#zz"), None);
+        assert_eq!(
+            parse_value(ValueKind::Bool, b"FALSE"),
+            Some(Value::Bool(false))
+        );
+        assert_eq!(parse_bool(b"false"), Some(false));
         let mut out = Vec::new();
         for v in [
             Value::Bool(true),
