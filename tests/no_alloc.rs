@@ -60,8 +60,8 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     let s = i % 7 < 4;
     let input = S5Input {
         s,
-        r: i % 31 == 0,
-        fr: i % 13 == 0,
+        r: i.is_multiple_of(31),
+        fr: i.is_multiple_of(13),
         tv,
     };
     for (k, kind) in S5Kind::ALL.into_iter().enumerate() {
@@ -74,7 +74,7 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     b.area.advance_to(CpuTime::from_millis(i * 7 + 3));
     b.area.fr(5, s).expect("T 5 exists");
     b.area.start(6, S5Kind::SPext, s, tv).expect("T 6 exists");
-    b.area.reset(7, i % 11 == 0).expect("T 7 exists");
+    b.area.reset(7, i.is_multiple_of(11)).expect("T 7 exists");
     let loads = (b.area.load(0), b.area.load_bcd(1), b.area.status(2));
     sum += u64::from(loads.0.unwrap_or(0)) + u64::from(loads.2.unwrap_or(false));
     sum += b.area.outputs().map(|o| u64::from(o.bi)).sum::<u64>();
@@ -82,24 +82,24 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     let ii = IecInput {
         input: s,
         pt,
-        reset: i % 17 == 0,
+        reset: i.is_multiple_of(17),
     };
     for (k, kind) in IecKind::ALL.into_iter().enumerate() {
         sum += u64::from(b.iec_refs[k].call(kind, now, ii).et);
         sum += u64::from(b.iec[k].call(kind, now, ii).et);
         sum += u64::from(b.iec_refs[k].read_q(now)) + u64::from(b.iec[k].read_et(now));
-        if i % 19 == 0 {
+        if i.is_multiple_of(19) {
             b.iec_refs[k].reset_timer();
             b.iec[k].reset_timer();
             b.iec_refs[k].preset_timer(pt);
             b.iec[k].preset_timer(pt);
         }
-        if i % 97 == 0 {
-            b.iec_refs[k].run_stop_run(k % 2 == 0);
-            b.iec[k].run_stop_run(k % 2 == 0);
+        if i.is_multiple_of(97) {
+            b.iec_refs[k].run_stop_run(k.is_multiple_of(2));
+            b.iec[k].run_stop_run(k.is_multiple_of(2));
         }
     }
-    b.ton_bank.scan(now, &[s, !s, i % 3 == 0], &[pt; 3]);
+    b.ton_bank.scan(now, &[s, !s, i.is_multiple_of(3)], &[pt; 3]);
     sum += b.ton_bank.outputs().map(|o| u64::from(o.et)).sum::<u64>();
     if let Some(state) = b.ton_bank.get(1) {
         b.ton_bank.set(2, state);
@@ -107,9 +107,9 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
 
     let ci = CounterInput {
         cu: s,
-        cd: i % 3 == 0,
-        r: i % 29 == 0,
-        ld: i % 37 == 0,
+        cd: i.is_multiple_of(3),
+        r: i.is_multiple_of(29),
+        ld: i.is_multiple_of(37),
         pv: 5,
     };
     for (k, kind) in CounterKind::ALL.into_iter().enumerate() {
@@ -123,13 +123,13 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
         };
         sum += b.ctrs[k].call(kind, unsigned).cv;
     }
-    let (cu, cd) = ([s, !s, i % 5 == 0], [i % 3 == 0; 3]);
+    let (cu, cd) = ([s, !s, i.is_multiple_of(5)], [i.is_multiple_of(3); 3]);
     let none = [false; 3];
     b.ctr_bank.scan(
         &BankInputs {
             cu: &cu,
             cd: &cd,
-            r: &[i % 29 == 0; 3],
+            r: &[i.is_multiple_of(29); 3],
             ld: &none,
         },
         7,
@@ -145,10 +145,10 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
 
     let sci = S5CounterInput {
         cu: s,
-        cd: i % 3 == 0,
-        s: i % 50 == 0,
-        r: i % 71 == 0,
-        fr: i % 23 == 0,
+        cd: i.is_multiple_of(3),
+        s: i.is_multiple_of(50),
+        r: i.is_multiple_of(71),
+        fr: i.is_multiple_of(23),
         pv,
     };
     for (k, kind) in S5CounterKind::ALL.into_iter().enumerate() {
@@ -158,9 +158,9 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     }
     b.s5c_area.fr(3, s).expect("C 3 exists");
     b.s5c_area.cu(3, s).expect("C 3 exists");
-    b.s5c_area.cd(3, i % 3 == 0).expect("C 3 exists");
-    b.s5c_area.set(3, i % 40 == 0, pv).expect("C 3 exists");
-    b.s5c_area.reset(3, i % 90 == 0).expect("C 3 exists");
+    b.s5c_area.cd(3, i.is_multiple_of(3)).expect("C 3 exists");
+    b.s5c_area.set(3, i.is_multiple_of(40), pv).expect("C 3 exists");
+    b.s5c_area.reset(3, i.is_multiple_of(90)).expect("C 3 exists");
     sum += u64::from(b.s5c_area.load(3).unwrap_or(0) + b.s5c_area.load_bcd(3).unwrap_or(0));
     sum += u64::from(b.s5c_area.status(3).unwrap_or(false));
     sum

@@ -301,7 +301,7 @@ impl Ton {
 
     /// One call of matiec's `TON` with IN = `input`, PT = `pt_ms`, `__CURRENT_TIME` = `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let fb = &mut self.0;
         fb.store_inputs(input, pt_ms);
@@ -338,7 +338,7 @@ impl Tof {
 
     /// One call of matiec's `TOF` with IN = `input`, PT = `pt_ms`, `__CURRENT_TIME` = `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let fb = &mut self.0;
         fb.store_inputs(input, pt_ms);
@@ -373,7 +373,7 @@ impl Tp {
 
     /// One call of matiec's `TP` with IN = `input`, PT = `pt_ms`, `__CURRENT_TIME` = `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let fb = &mut self.0;
         fb.store_inputs(input, pt_ms);
@@ -509,7 +509,7 @@ impl<T: PeerInt> Ctu<T> {
     }
 
     /// One call of matiec's `CTU` with CU = `cu`, R = `r`, PV = `pv`; returns (Q, CV).
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, cu: bool, r: bool, pv: T) -> (bool, T) {
         self.cu.set(cu);
         self.r.set(r);
@@ -584,7 +584,7 @@ impl<T: PeerInt> Ctd<T> {
     }
 
     /// One call of matiec's `CTD` with CD = `cd`, LD = `ld`, PV = `pv`; returns (Q, CV).
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, cd: bool, ld: bool, pv: T) -> (bool, T) {
         self.cd.set(cd);
         self.ld.set(ld);

@@ -31,7 +31,7 @@ struct Signal {
 
 impl Signal {
     /// 1 when `next` is 1 and differs from the remembered value; remembers `next`.
-    #[inline]
+    #[inline(always)]
     fn rising_edge(&mut self, next: bool) -> bool {
         let edge = next && (self.current_value ^ next);
         self.current_value = next;
@@ -39,7 +39,7 @@ impl Signal {
     }
 
     /// 1 when `next` is 0 and differs from the remembered value; remembers `next`.
-    #[inline]
+    #[inline(always)]
     fn falling_edge(&mut self, next: bool) -> bool {
         let edge = !next && (self.current_value ^ next);
         self.current_value = next;
@@ -47,7 +47,7 @@ impl Signal {
     }
 
     /// Remembers `value`.
-    #[inline]
+    #[inline(always)]
     fn set(&mut self, value: bool) {
         self.current_value = value;
     }
@@ -91,13 +91,13 @@ impl TimerParams {
         start_time: None,
     };
 
-    #[inline]
+    #[inline(always)]
     fn is_running(&self) -> bool {
         self.is_running
     }
 
     /// Reads the clock into the start time, marks running, ET = 0.
-    #[inline]
+    #[inline(always)]
     fn start(&mut self, now: u32) {
         self.start_time = Some(now);
         self.is_running = true;
@@ -105,20 +105,20 @@ impl TimerParams {
     }
 
     /// Forgets the start time, marks stopped, ET = 0.
-    #[inline]
+    #[inline(always)]
     fn reset(&mut self) {
         self.start_time = None;
         self.is_running = false;
         self.set_elapsed_time(0);
     }
 
-    #[inline]
+    #[inline(always)]
     fn set_elapsed_time(&mut self, duration: Time) {
         self.elapsed_time = duration;
     }
 
     /// While running: ET = the smaller of PT and the running time (a clock read).
-    #[inline]
+    #[inline(always)]
     fn update_elapsed_time(&mut self, now: u32) {
         if self.is_running() {
             let run = self.get_run_time(now).expect("timer should be running");
@@ -128,7 +128,7 @@ impl TimerParams {
 
     /// The running time (a second clock read) is at most PT, PT taken as unsigned: a negative
     /// PT becomes huge and is never passed. False when not started.
-    #[inline]
+    #[inline(always)]
     fn is_in_preset_range(&self, now: u32) -> bool {
         let preset = self.preset_time as u64;
         self.get_run_time(now)
@@ -137,28 +137,28 @@ impl TimerParams {
 
     /// The time since the start, if started. RuSTy: `Instant::elapsed`; here the clock
     /// difference modulo 2^32.
-    #[inline]
+    #[inline(always)]
     fn get_run_time(&self, now: u32) -> Option<u32> {
         self.start_time.map(|start| now.wrapping_sub(start))
     }
 
-    #[inline]
+    #[inline(always)]
     fn set_output(&mut self, value: bool) {
         self.output = value;
     }
 
-    #[inline]
+    #[inline(always)]
     fn input_rising_edge(&mut self) -> bool {
         self.input_edge.rising_edge(self.input)
     }
 
-    #[inline]
+    #[inline(always)]
     fn input_falling_edge(&mut self) -> bool {
         self.input_edge.falling_edge(self.input)
     }
 
     /// What the caller does around the body: store IN and PT into the instance.
-    #[inline]
+    #[inline(always)]
     fn store_inputs(&mut self, input: bool, pt_ms: i32) {
         self.input = input;
         self.preset_time = Time::from(pt_ms);
@@ -166,7 +166,7 @@ impl TimerParams {
 
     /// What the caller reads after the body: Q and ET (ET in milliseconds; it is never above
     /// PT, so it fits in `i32`).
-    #[inline]
+    #[inline(always)]
     fn outputs(&self) -> (bool, i32) {
         (self.output, self.elapsed_time as i32)
     }
@@ -245,7 +245,7 @@ impl Ton {
 
     /// One call of RuSTy's `TON` with IN = `input`, PT = `pt_ms`, the clock at `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let timer = &mut self.0;
         timer.store_inputs(input, pt_ms);
@@ -277,7 +277,7 @@ impl Tof {
 
     /// One call of RuSTy's `TOF` with IN = `input`, PT = `pt_ms`, the clock at `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let timer = &mut self.0;
         timer.store_inputs(input, pt_ms);
@@ -309,7 +309,7 @@ impl Tp {
 
     /// One call of RuSTy's `TP` with IN = `input`, PT = `pt_ms`, the clock at `now_ms`;
     /// returns (Q, ET in ms). See the type's documentation for the differences from S7.
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, input: bool, pt_ms: i32, now_ms: u32) -> (bool, i32) {
         let timer = &mut self.0;
         timer.store_inputs(input, pt_ms);
@@ -399,7 +399,7 @@ impl<T: PeerInt> Ctu<T> {
     }
 
     /// One call of RuSTy's `CTU` with CU = `cu`, R = `r`, PV = `pv`; returns (Q, CV).
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, cu: bool, r: bool, pv: T) -> (bool, T) {
         self.cu = cu;
         self.r = r;
@@ -465,7 +465,7 @@ impl<T: PeerInt> Ctd<T> {
     }
 
     /// One call of RuSTy's `CTD` with CD = `cd`, LD = `ld`, PV = `pv`; returns (Q, CV).
-    #[inline]
+    #[inline(always)]
     pub fn call(&mut self, cd: bool, ld: bool, pv: T) -> (bool, T) {
         self.cd = cd;
         self.ld = ld;

@@ -1,7 +1,9 @@
 //! The optimized IEC counter: [`Counter`], CV and the two edge memories in one small struct with
 //! a short step.
 
-use super::{CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState};
+use super::{
+    outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
+};
 
 const CU_PREV: u8 = 1;
 const CD_PREV: u8 = 2;
@@ -53,45 +55,47 @@ impl<T: CounterInt> Counter<T> {
 
 impl<T: CounterInt> CounterOps<T> for Counter<T> {
     /// The reference's rules (edges, then R before LD before counting), with the edge
-    /// memories in one byte and the inputs read field by field (measured faster than masking
-    /// the input struct as a whole, which LLVM packs into one integer and unpacks again).
+    /// memories in one byte, as branches: for a counter called once per scan they go the same
+    /// way most scans, and a predicted branch costs less than computing every case; CV is
+    /// written only when it changes (measured faster than either the branch-free form or a
+    /// write on every call).
     ///
     /// Why it equals [`super::CounterRef`]: the inputs a kind lacks are taken as 0, as the
-    /// reference's `kind.mask` does (CNT-INPUTS-01); read field by field, which LLVM keeps in
-    /// single registers. `up` and `down` are the reference's edges: the input is 1 and its
-    /// memory, a bit of `edges`, is 0; both memories then take the inputs, on every call, also
-    /// under R and LD (CNT-EDGE-01). Up alone counts up, down alone counts down, both or
-    /// neither leave CV (CNT-SIMUL-01), with the reference's saturating steps (CNT-SAT-01).
-    /// Then LD replaces the count and R replaces both (CNT-PRIO-01).
-    #[inline]
+    /// reference's `kind.mask` does (CNT-INPUTS-01). `up` and `down` are the reference's
+    /// edges: the input is 1 and its memory, a bit of `edges`, is 0; both memories then take
+    /// the inputs, on every call, also under R and LD (CNT-EDGE-01). R replaces the count by
+    /// 0, else LD by PV (CNT-PRIO-01); else up alone counts up, down alone counts down, both
+    /// or neither leave CV (CNT-SIMUL-01), with the reference's saturating steps
+    /// (CNT-SAT-01).
+    #[inline(always)]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
         let (cu, cd, r, ld) = match kind {
             CounterKind::Ctu => (input.cu, false, input.r, false),
             CounterKind::Ctd => (false, input.cd, false, input.ld),
             CounterKind::Ctud => (input.cu, input.cd, input.r, input.ld),
         };
-        let up = cu & (self.edges & CU_PREV == 0);
-        let down = cd & (self.edges & CD_PREV == 0);
+        // Both members are read before either is written: a read of the whole struct after a
+        // write of one byte of it would wait for that write to reach the cache.
+        let (v, e) = (self.cv, self.edges);
+        let up = cu && e & CU_PREV == 0;
+        let down = cd && e & CD_PREV == 0;
         self.edges = edge_bits(cu, cd);
-        let cv = self.cv;
-        let counted = match (up, down) {
-            (true, false) => cv.saturating_inc(),
-            (false, true) => cv.saturating_dec(),
-            _ => cv,
-        };
-        let cv = if r {
-            T::ZERO
+        let mut cv = v;
+        if r {
+            cv = T::ZERO;
+            self.cv = cv;
         } else if ld {
-            input.pv
-        } else {
-            counted
-        };
-        self.cv = cv;
-        CounterOutput {
-            qu: cv >= input.pv,
-            qd: cv <= T::ZERO,
-            cv,
+            cv = input.pv;
+            self.cv = cv;
+        } else if up != down {
+            cv = if up {
+                v.saturating_inc()
+            } else {
+                v.saturating_dec()
+            };
+            self.cv = cv;
         }
+        outputs(cv, input.pv)
     }
 
     /// The abstraction function.

@@ -6,9 +6,22 @@
 use super::{IecKind, IecOutput, IecState};
 use crate::time::{CpuTime, Time};
 
-const IN: u8 = 0b001;
-const Q: u8 = 0b010;
-const RUNNING: u8 = 0b100;
+/// Flag bits of [`TonBank::flags`].
+const IN: u8 = 0b0001;
+const Q: u8 = 0b0010;
+const RUNNING: u8 = 0b0100;
+/// A running timer put in the bank by [`TonBank::set`], whose ET slot holds its ET (see
+/// [`TonBank`]'s representation); cleared by the next scan.
+const EXPLICIT: u8 = 0b1000;
+
+/// The top bit of a 32-bit word: `x ^ BIAS` maps the unsigned order of `x` onto the signed order
+/// (`a < b` unsigned exactly when `(a ^ BIAS) < (b ^ BIAS)` signed), and `x ^ BIAS` equals
+/// `x + BIAS` modulo 2^32 (the carry out of the top bit is dropped).
+const BIAS: u32 = 0x8000_0000;
+
+/// Timers per step of the scan's kernel: 16 flag bytes fill one 128-bit vector, their 16 words
+/// four.
+const LANES: usize = 16;
 
 /// `N` TON timers, called together once per scan.
 ///
@@ -27,14 +40,31 @@ const RUNNING: u8 = 0b100;
 /// assert_eq!(q, [true, false, true]);
 /// assert_eq!(delays.output(0).map(|o| o.et), Some(2_000));
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// # Representation
+///
+/// Per timer: START, PT (stored as `PT ^ 2^31`, the form the scan compares in), an ET slot and
+/// a flag byte (IN, Q, RUNNING). The ET slot of a stopped timer holds its ET. A running timer's
+/// ET is not stored: it is `now - START` for the clock `now` of the last scan (the bank keeps
+/// it), which is exactly what that scan's update computed (ET = elapsed while elapsed < PT); its
+/// ET slot holds its PT instead, the ET it will have when it expires, so that the expiry writes
+/// nothing there. A running timer put in the bank by [`TonBank::set`], whose ET need not be
+/// `now - START`, keeps its ET in the slot and a flag saying so until the next scan. The scan
+/// then needs, per timer, one subtraction, one compare and a few masks.
+#[derive(Clone, Debug)]
 pub struct TonBank<const N: usize> {
     start: [u32; N],
+    /// PT ^ [`BIAS`].
     pt: [u32; N],
+    /// ET of a stopped timer; PT of a running one (unless [`EXPLICIT`]).
     et: [u32; N],
     flags: [u8; N],
+    /// The clock of the last scan.
+    now: u32,
     /// Whether a scan has run: before it, no instruction has run on the structures.
     scanned: bool,
+    /// Whether some timer has the [`EXPLICIT`] flag.
+    explicit: bool,
 }
 
 impl<const N: usize> Default for TonBank<N> {
@@ -42,6 +72,16 @@ impl<const N: usize> Default for TonBank<N> {
         TonBank::new()
     }
 }
+
+/// Two banks are equal when their timers are: the same states ([`TonBank::get`]), whatever
+/// their representation.
+impl<const N: usize> PartialEq for TonBank<N> {
+    fn eq(&self, other: &Self) -> bool {
+        self.scanned == other.scanned && (0..N).all(|i| self.get(i) == other.get(i))
+    }
+}
+
+impl<const N: usize> Eq for TonBank<N> {}
 
 impl<const N: usize> TonBank<N> {
     /// The number of timers.
@@ -51,10 +91,21 @@ impl<const N: usize> TonBank<N> {
     pub const fn new() -> TonBank<N> {
         TonBank {
             start: [0; N],
-            pt: [0; N],
+            pt: [BIAS; N],
             et: [0; N],
             flags: [0; N],
+            now: 0,
             scanned: false,
+            explicit: false,
+        }
+    }
+
+    /// ET of timer `i` (`i < N`): derived for a running timer (see the representation).
+    fn et_of(&self, i: usize) -> u32 {
+        if self.flags[i] & (RUNNING | EXPLICIT) == RUNNING {
+            self.now.wrapping_sub(self.start[i])
+        } else {
+            self.et[i]
         }
     }
 
@@ -62,16 +113,16 @@ impl<const N: usize> TonBank<N> {
     pub fn output(&self, i: usize) -> Option<IecOutput<u32>> {
         Some(IecOutput {
             q: *self.flags.get(i)? & Q != 0,
-            et: self.et[i],
+            et: self.et_of(i),
         })
     }
 
     /// The outputs of every timer, timer 0 first.
     pub fn outputs(&self) -> impl ExactSizeIterator<Item = IecOutput<u32>> + '_ {
-        self.flags
-            .iter()
-            .zip(&self.et)
-            .map(|(&f, &et)| IecOutput { q: f & Q != 0, et })
+        (0..N).map(|i| IecOutput {
+            q: self.flags[i] & Q != 0,
+            et: self.et_of(i),
+        })
     }
 
     /// The state of timer `i` as the reference names it, if it exists.
@@ -82,8 +133,8 @@ impl<const N: usize> TonBank<N> {
             input: f & IN != 0,
             running: f & RUNNING != 0,
             start: self.start[i],
-            pt: self.pt[i],
-            et: self.et[i],
+            pt: self.pt[i] ^ BIAS,
+            et: self.et_of(i),
             q: f & Q != 0,
         })
     }
@@ -95,64 +146,278 @@ impl<const N: usize> TonBank<N> {
             return false;
         }
         self.start[i] = state.start;
-        self.pt[i] = state.pt;
+        self.pt[i] = state.pt ^ BIAS;
         self.et[i] = state.et;
         self.flags[i] = (u8::from(state.input) * IN)
             | (u8::from(state.q) * Q)
-            | (u8::from(state.running) * RUNNING);
+            | (u8::from(state.running) * (RUNNING | EXPLICIT));
+        self.explicit |= state.running;
         true
+    }
+
+    /// Brings every [`EXPLICIT`] timer to the representation the scan expects: ET slot = PT,
+    /// and Q = 0 (a running timer's Q does not enter the TON update: after it, Q is whether
+    /// the time has run out). Its ET and Q before the scan no longer matter: the scan gives
+    /// a running timer a new ET and Q (update, restart or reset), whatever they were.
+    fn settle_explicit(&mut self) {
+        for ((f, et), &pt) in self.flags.iter_mut().zip(self.et.iter_mut()).zip(&self.pt) {
+            if *f & EXPLICIT != 0 {
+                *et = pt ^ BIAS;
+                *f &= !(EXPLICIT | Q);
+            }
+        }
+        self.explicit = false;
     }
 
     /// One scan at CPU time `now`: timer `i` called as TON with `IN` = `input[i]` and
     /// `PT` = `pt[i]`.
     ///
-    /// One pass over the arrays with the same straight-line code for every timer: each member
-    /// is computed for every case and the inputs select, without a branch, so that LLVM
-    /// vectorizes the loop (several timers per instruction) and no timer's state costs a
-    /// misprediction.
+    /// Two steps. A pass over the timers, 16 at a time, with the same straight-line code for
+    /// every timer (no branch on a timer's state, so that the compiler keeps 16 timers in
+    /// vector registers, and no misprediction), does everything but the start of a timer.
+    /// Then each timer whose IN rose (a rare event: once per switching on) is started alone.
     ///
-    /// Why it equals the reference's TON ([`super::IecTimerRef`], `ton`): a rising IN
-    /// (`IN` = 1, its memory 0) starts: START = now, PT latched (negative as 0), running, and
-    /// the update that follows sees `elapsed = now - now = 0`, so ET = 0 or PT = 0, and Q
-    /// only if PT = 0. Otherwise a running timer updates (`elapsed = now - START` modulo
-    /// 2^32, expiry at `elapsed >= PT`: ET = PT, Q = 1, stopped, START = 0; before: ET =
-    /// elapsed, Q = 0) and a stopped one keeps ET and Q; its START is 0 already (the validity
-    /// invariant, `IecState::is_valid`, which `set` checks and every scan keeps). Last, IN = 0
-    /// resets: START = ET = 0, Q = 0, stopped, IN memory 0; PT is kept, as the reference keeps
-    /// it (a rise needs IN = 1, so PT is unchanged on that path).
+    /// Why it equals the reference's TON ([`super::IecTimerRef`], `ton`), with the
+    /// representation of [`TonBank`] (a running timer's ET slot = PT, ET = clock - START):
+    ///
+    /// - IN = 0 (`reset_and_stop`): START = ET = 0, flags 0 (stopped, Q = 0, IN memory 0); PT
+    ///   kept. The pass masks START, the ET slot and the flags with IN.
+    /// - IN = 1, memory 1, running (the update): `elapsed = now - START` modulo 2^32; the
+    ///   pass compares `elapsed < PT` as `(now ^ 2^31) - START < PT ^ 2^31` signed (both
+    ///   sides are the unsigned values plus 2^31, see `BIAS`). Not reached: START kept, still
+    ///   running, Q = 0, and ET = elapsed = the new clock - START (derived). Reached: START =
+    ///   0, stopped, Q = 1, and ET = PT, which the slot holds already.
+    /// - IN = 1, memory 1, stopped: nothing changes (its START is 0, [`IecState::is_valid`],
+    ///   so masking it changes nothing; the ET slot and Q are kept).
+    /// - IN = 1, memory 0 (a rise: `start` then `update` at the same instant): START = now,
+    ///   PT latched (negative as 0), ET = 0; the update finds `elapsed = 0`, which reaches PT
+    ///   only when PT = 0: then stopped with Q = 1 and ET = PT = 0 (START = 0), else running
+    ///   with Q = 0, whose ET slot takes PT and whose derived ET is `now - now` = 0. The pass
+    ///   computes something else for such a timer; the second step overwrites all of its
+    ///   members.
+    ///
+    /// The flags after the pass: Q (bit 1) and RUNNING (bit 2) of a running timer go from 4
+    /// to 2 (expired) by subtracting 2, a stopped timer's stay; the running timers' Q is 0
+    /// (kept so by every step and by `settle_explicit`), so bits 1-2 are 4, 2 or 0 and the
+    /// subtraction never borrows.
     pub fn scan(&mut self, now: CpuTime, input: &[bool; N], pt: &[Time; N]) {
         let now = now.clock::<u32>();
-        self.scanned = true;
-        let lanes = self
-            .start
-            .iter_mut()
-            .zip(self.pt.iter_mut())
-            .zip(self.et.iter_mut())
-            .zip(self.flags.iter_mut())
-            .zip(input.iter().zip(pt.iter()));
-        for ((((start, latched), et), flags), (&on, preset)) in lanes {
-            let f = *flags;
-            let rise = on & (f & IN == 0);
-            let run = rise | (f & RUNNING != 0);
-            let s = if rise { now } else { *start };
-            let p = if rise {
-                preset.clamp_negative()
-            } else {
-                *latched
-            };
-            let elapsed = now.wrapping_sub(s);
-            let reached = elapsed >= p;
-            let e = if run { elapsed.min(p) } else { *et };
-            let q = if run { reached } else { f & Q != 0 };
-            let goes_on = run & !reached;
-            *start = if on & goes_on { s } else { 0 };
-            *latched = p;
-            *et = if on { e } else { 0 };
-            *flags = if on {
-                IN | (u8::from(q) * Q) | (u8::from(goes_on) * RUNNING)
-            } else {
-                0
-            };
+        if self.explicit {
+            self.settle_explicit();
         }
+        self.scanned = true;
+        self.now = now;
+        let now_biased = now ^ BIAS;
+        let (start, start_tail) = self.start.as_chunks_mut::<LANES>();
+        let (slots, slots_tail) = self.et.as_chunks_mut::<LANES>();
+        let (flags, flags_tail) = self.flags.as_chunks_mut::<LANES>();
+        let (latched, latched_tail) = self.pt.as_chunks_mut::<LANES>();
+        let (inputs, inputs_tail) = input.as_chunks::<LANES>();
+        let (presets, presets_tail) = pt.as_chunks::<LANES>();
+        let chunks = start
+            .iter_mut()
+            .zip(slots.iter_mut())
+            .zip(flags.iter_mut())
+            .zip(latched.iter_mut())
+            .zip(inputs.iter().zip(presets));
+        for ((((start, slots), flags), latched), (inputs, presets)) in chunks {
+            let rises = pass(now_biased, start, latched, slots, flags, inputs);
+            if rises != 0 {
+                start_rises(rises, now, start, latched, slots, flags, presets);
+            }
+        }
+        // The last `N % LANES` timers: through the same code on a padded copy (the padding
+        // timers are new ones with IN = 0, which stay as they are).
+        let n = start_tail.len();
+        if n > 0 {
+            let mut start = [0; LANES];
+            let mut latched = [BIAS; LANES];
+            let mut slots = [0; LANES];
+            let mut flags = [0; LANES];
+            let mut inputs = [false; LANES];
+            let mut presets = [Time::ZERO; LANES];
+            start[..n].copy_from_slice(start_tail);
+            latched[..n].copy_from_slice(latched_tail);
+            slots[..n].copy_from_slice(slots_tail);
+            flags[..n].copy_from_slice(flags_tail);
+            inputs[..n].copy_from_slice(inputs_tail);
+            presets[..n].copy_from_slice(presets_tail);
+            let rises = pass(
+                now_biased, &mut start, &latched, &mut slots, &mut flags, &inputs,
+            );
+            start_rises(
+                rises,
+                now,
+                &mut start,
+                &mut latched,
+                &mut slots,
+                &mut flags,
+                &presets,
+            );
+            start_tail.copy_from_slice(&start[..n]);
+            latched_tail.copy_from_slice(&latched[..n]);
+            slots_tail.copy_from_slice(&slots[..n]);
+            flags_tail.copy_from_slice(&flags[..n]);
+        }
+    }
+}
+
+/// The pass of [`TonBank::scan`] over 16 timers: every case but the start, as masks (see the
+/// proof there). Returns the timers whose IN rose: byte `j` (little-endian) is 1 for timer `j`.
+#[inline(always)]
+fn pass(
+    now_biased: u32,
+    start: &mut [u32; LANES],
+    latched: &[u32; LANES],
+    slots: &mut [u32; LANES],
+    flags: &mut [u8; LANES],
+    inputs: &[bool; LANES],
+) -> u128 {
+    let on: [u8; LANES] = core::array::from_fn(|j| u8::from(inputs[j]));
+    let mut not_reached = [0u8; LANES];
+    for j in 0..LANES {
+        // All ones when IN = 1.
+        let on = u32::from(on[j]).wrapping_neg();
+        let elapsed_biased = now_biased.wrapping_sub(start[j]);
+        let nr = u32::from((latched[j] as i32) > (elapsed_biased as i32)).wrapping_neg();
+        start[j] &= nr & on;
+        slots[j] &= on;
+        not_reached[j] = nr as u8;
+    }
+    let mut rises = [0u8; LANES];
+    for j in 0..LANES {
+        let f = flags[j];
+        rises[j] = on[j] & !f & IN;
+        let status = (f & (IN | Q | RUNNING)) - ((f >> 1) & !not_reached[j] & Q);
+        flags[j] = status & on[j].wrapping_neg();
+    }
+    u128::from_le_bytes(rises)
+}
+
+/// The second step of [`TonBank::scan`]: starts the timers of `rises` (as [`pass`] returns them).
+#[inline(always)]
+fn start_rises(
+    mut rises: u128,
+    now: u32,
+    start: &mut [u32; LANES],
+    latched: &mut [u32; LANES],
+    slots: &mut [u32; LANES],
+    flags: &mut [u8; LANES],
+    presets: &[Time; LANES],
+) {
+    while rises != 0 {
+        let j = (rises.trailing_zeros() / 8) as usize;
+        rises &= rises - 1;
+        let pt = presets[j].clamp_negative();
+        let runs = pt != 0;
+        start[j] = if runs { now } else { 0 };
+        latched[j] = pt ^ BIAS;
+        slots[j] = pt;
+        flags[j] = IN | if runs { RUNNING } else { Q };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::TonBank;
+    use crate::iec::{IecInput, IecKind, IecState, IecTimerOps, IecTimerRef};
+    use crate::time::{CpuTime, Time};
+    use std::vec::Vec;
+
+    /// A small deterministic generator (xorshift64*).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 >> 12;
+            self.0 ^= self.0 << 25;
+            self.0 ^= self.0 >> 27;
+            self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+        }
+        fn below(&mut self, n: u64) -> u64 {
+            self.next() % n
+        }
+    }
+
+    /// A valid structure of any kind's making (for `set`): running or stopped, any IN and Q.
+    fn any_state(rng: &mut Rng) -> IecState<u32> {
+        let pt = rng.below(60) as u32;
+        let running = rng.below(2) == 0;
+        IecState {
+            kind: None,
+            input: rng.below(2) == 0,
+            running,
+            start: if running { rng.next() as u32 } else { 0 },
+            pt,
+            et: rng.below(u64::from(pt) + 1) as u32,
+            q: rng.below(2) == 0,
+        }
+    }
+
+    /// `N` timers (full groups of 16 and a shorter last group) scanned with random inputs and
+    /// presets (negative, 0, small), random scan intervals (across the 2^32 ms wrap of the
+    /// clock), and now and then a timer put in any valid state by `set`: every timer's
+    /// outputs and state equal a reference TON called once per scan.
+    fn bank_equals_reference<const N: usize>(seed: u64) {
+        let mut rng = Rng(seed);
+        let mut bank = TonBank::<N>::new();
+        let mut refs = [IecTimerRef::<u32>::new(); N];
+        let mut now = (1u64 << 32) - 300;
+        let mut inputs = [false; N];
+        for _ in 0..400 {
+            for (i, (input, r)) in inputs.iter_mut().zip(refs.iter_mut()).enumerate() {
+                if rng.below(4) == 0 {
+                    *input = !*input;
+                }
+                if rng.below(50) == 0 {
+                    let s = any_state(&mut rng);
+                    *r = IecTimerRef::from_state(s).expect("a valid state");
+                    assert!(bank.set(i, s));
+                    let kind = bank.get(i).and_then(|b| b.kind);
+                    assert_eq!(bank.get(i), Some(IecState { kind, ..s }));
+                }
+            }
+            let pt: [Time; N] =
+                core::array::from_fn(|_| Time::from_millis(rng.below(70) as i32 - 10));
+            now += rng.below(25);
+            let at = CpuTime::from_millis(now);
+            bank.scan(at, &inputs, &pt);
+            for (i, r) in refs.iter_mut().enumerate() {
+                let out = r.call(IecKind::Ton, at, IecInput::new(inputs[i], pt[i]));
+                assert_eq!(bank.output(i), Some(out), "timer {i} at {now}");
+                assert_eq!(bank.get(i), Some(r.state()), "timer {i} at {now}");
+            }
+            let outs: Vec<_> = bank.outputs().collect();
+            assert_eq!(outs.len(), N);
+            assert!(outs
+                .iter()
+                .enumerate()
+                .all(|(i, o)| Some(*o) == bank.output(i)));
+        }
+    }
+
+    #[test]
+    fn scan_equals_reference() {
+        for seed in 1..=20 {
+            bank_equals_reference::<1>(seed);
+            bank_equals_reference::<16>(seed);
+            bank_equals_reference::<37>(seed);
+        }
+    }
+
+    /// Equality is that of the timers, whatever their representation: a running timer put in
+    /// by `set` (its ET stored) equals the same timer reached by a scan (its ET derived).
+    #[test]
+    fn equality_is_of_the_timers() {
+        let pt = [Time::from_millis(100)];
+        let mut scanned = TonBank::<1>::new();
+        scanned.scan(CpuTime::from_millis(10), &[true], &pt);
+        scanned.scan(CpuTime::from_millis(40), &[true], &pt);
+        let mut set = TonBank::<1>::new();
+        set.scan(CpuTime::from_millis(0), &[false], &pt);
+        assert!(set.set(0, scanned.get(0).expect("timer 0")));
+        assert_eq!(set.get(0), scanned.get(0));
+        assert_eq!(set, scanned);
+        assert_eq!(scanned.output(0).map(|o| o.et), Some(30));
     }
 }

@@ -191,7 +191,7 @@ impl<C: ClockWord> IecTimerOf<C> {
             return;
         }
         let elapsed = now.elapsed_since(self.start);
-        if elapsed >= self.pt {
+        if reached(elapsed, self.pt) {
             self.et = self.pt;
             self.start = C::default();
             self.flags = (self.flags & !(flag::RUNNING | flag::Q)) | Q_EXPIRED[k];
@@ -207,16 +207,6 @@ impl<C: ClockWord> IecTimerOf<C> {
         self.et = C::default();
         self.flags &= !(flag::RUNNING | flag::Q);
     }
-}
-
-/// `a` if `c`, else `b`, by arithmetic on the bits (`b ^ ((a ^ b) & mask)`) rather than by
-/// `if`, which LLVM may turn into a branch. Exact: the mask is all ones or 0, so the u64 is
-/// `a.to_u64()` or `b.to_u64()`, a value below `2^BITS`, which `from_u64_wrapping` (the value
-/// modulo `2^BITS`) gives back as the clock word it came from.
-#[inline(always)]
-fn blend<C: ClockWord>(c: bool, a: C, b: C) -> C {
-    let (a, b) = (a.to_u64(), b.to_u64());
-    C::from_u64_wrapping(b ^ ((a ^ b) & u64::from(c).wrapping_neg()))
 }
 
 impl<C: ClockWord> IecTimerOf<C> {
@@ -237,7 +227,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         q_expired: bool,
     ) -> IecOutput<C> {
         let pt = C::from_preset(pt.clamp_negative());
-        let runs = pt != C::ZERO;
+        let runs = !reached(C::ZERO, pt);
         let q = if runs { q_running } else { q_expired };
         self.start = if runs { now } else { C::ZERO };
         self.pt = pt;
@@ -248,26 +238,16 @@ impl<C: ClockWord> IecTimerOf<C> {
 
     /// The reference's `update` of a running timer (IEC-UPDATE-01): `elapsed = now - START`
     /// (modulo 2^BITS); at `elapsed >= PT` it has expired: ET = PT, Q = `q_expired`, stopped,
-    /// START = 0; before, ET = elapsed and Q = `q_running`, still running. With `pause`, the
-    /// timer then stops in either case (TONR with IN = 0: the reference's pause after the
-    /// update), keeping ET and Q.
+    /// START = 0; before, ET = elapsed and Q = `q_running`, still running.
     #[inline(always)]
-    fn advance(
-        &mut self,
-        now: C,
-        flags: u8,
-        q_running: bool,
-        q_expired: bool,
-        pause: bool,
-    ) -> IecOutput<C> {
+    fn advance(&mut self, now: C, flags: u8, q_running: bool, q_expired: bool) -> IecOutput<C> {
         let elapsed = now.elapsed_since(self.start);
-        let reached = elapsed >= self.pt;
-        let q = if reached { q_expired } else { q_running };
-        let et = if reached { self.pt } else { elapsed };
-        let runs = !reached & !pause;
-        self.start = if runs { self.start } else { C::ZERO };
+        let expired = reached(elapsed, self.pt);
+        let q = if expired { q_expired } else { q_running };
+        let et = if expired { self.pt } else { elapsed };
+        self.start = if expired { C::ZERO } else { self.start };
         self.et = et;
-        self.flags = flags | if runs { flag::RUNNING } else { 0 } | if q { flag::Q } else { 0 };
+        self.flags = flags | if expired { 0 } else { flag::RUNNING } | if q { flag::Q } else { 0 };
         IecOutput { q, et }
     }
 
@@ -293,14 +273,86 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 }
 
+// `ton_for_arrays` computes the flag bits by arithmetic on these values.
+const _: () = assert!(flag::IN == 1 && flag::Q == 2 && flag::RUNNING == 4);
+
+/// IEC-EXPIRY-01: the time has run out when the elapsed time reaches PT. Every update of this
+/// module compares through here.
+#[inline(always)]
+fn reached<C: ClockWord>(elapsed: C, pt: C) -> bool {
+    elapsed >= pt
+}
+
+/// `c` where `mask` is all ones, 0 where it is 0 (an `and` instead of a conditional move, which
+/// needs a register holding 0).
+#[inline(always)]
+fn masked<C: ClockWord>(c: C, mask: u32) -> C {
+    C::from_u64_wrapping(c.to_u64() & u64::from(mask))
+}
+
+impl<C: ClockWord> IecTimerOf<C> {
+    /// The call `call(IecKind::Ton, now, input)` for a loop over an array of timers: no branch
+    /// on IN or on the timer's state, which differ from one timer to the next in such a loop
+    /// (a branch on them would be mispredicted about every other timer); one branch on the
+    /// rising edge of IN, which a timer sees once per switching on. Same outputs and same
+    /// structure afterwards as [`IecTimerOps::call`] (this module's tests compare the two on
+    /// every structure of a 4-bit clock). `call` is faster for a timer called once per scan,
+    /// whose branches go the same way scan after scan.
+    ///
+    /// Why it equals the reference's `ton`: a rise is `begin`, the reference's `start` and
+    /// `update` at one instant (see there). Otherwise both remaining cases are computed and
+    /// selected: a running timer updates (`elapsed = now - START` modulo 2^BITS; reached at
+    /// `elapsed >= PT`: ET = PT, Q = 1, stopped, START = 0; before: ET = elapsed, Q = 0, still
+    /// running), a stopped one keeps ET and Q (its START is 0 already, [`IecState::is_valid`]);
+    /// then IN = 0 forces START = ET = 0, Q = 0, stopped (the reference's `reset_and_stop`; PT
+    /// is kept on both paths). `select_unpredictable` keeps each choice a conditional move,
+    /// which the compiler would otherwise be free to turn back into a branch (it did, in a
+    /// loop over an array, when this was written with `if`). Q and RUNNING are computed as
+    /// the bits they are in the flag byte: a running timer's go to 4 (still running) or 2
+    /// (expired, Q = 1), which is `2 + 2 * not_reached`.
+    #[inline]
+    pub fn ton_for_arrays(&mut self, now: CpuTime, input: IecInput) -> IecOutput<C> {
+        use core::hint::select_unpredictable as select;
+        let now = now.clock::<C>();
+        let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u8) << flag::KIND_SHIFT;
+        // The flags as 32-bit values: byte-wide bit arithmetic would write parts of registers,
+        // which on some CPUs (AMD Zen) makes each timer wait for the previous timer's result.
+        let f = u32::from(self.flags);
+        let on = u32::from(input.input);
+        if on & !f & u32::from(flag::IN) != 0 {
+            return self.begin(now, input.pt, kind_bits | flag::IN, false, true);
+        }
+        let run = f & u32::from(flag::RUNNING) != 0;
+        let elapsed = now.elapsed_since(self.start);
+        let not_reached = !reached(elapsed, self.pt);
+        let et = select(run, select(not_reached, elapsed, self.pt), self.et);
+        // Q (bit 1) and RUNNING (bit 2) after the update: a running timer is either still
+        // running (4) or has expired with Q = 1 (2); a stopped one keeps its Q.
+        let status = select(run, 2 + 2 * u32::from(not_reached), f & u32::from(flag::Q));
+        // IN = 0 clears everything.
+        let on_mask = on.wrapping_neg();
+        let status = (u32::from(flag::IN) | status) & on_mask;
+        self.start = masked(self.start, (status >> 2).wrapping_neg());
+        self.et = masked(et, on_mask);
+        self.flags = kind_bits | status as u8;
+        IecOutput {
+            q: status & u32::from(flag::Q) != 0,
+            et: self.et,
+        }
+    }
+}
+
 impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
-    /// One box call. TP, TOF and TONR: the reference's decisions, taken on the inputs and on
-    /// the timer's state (the reference's functions are named below), and per path only the
-    /// members that path changes are written; where the outcome depends on the time
-    /// (expiry), selects instead of branches. TON: straight-line, see its arm. `kind` is a constant at every call site of a program, and the `match` on it
-    /// disappears when the call is inlined. (An earlier version first tested for a quiet
-    /// stopped timer and returned; that test cost more than it saved, and is gone: the quiet
-    /// cases are now the `idle` paths, which write one byte.)
+    /// One box call: the reference's decisions, taken as branches on the inputs and on the
+    /// timer's state (the reference's functions are named below), and per path only the
+    /// members that path changes are written. A timer called once per scan takes the same
+    /// branches scan after scan, which the processor predicts: measured, this costs less than
+    /// computing every case without branches (for a loop over many TON timers, whose states
+    /// differ from one timer to the next, see [`IecTimerOf::ton_for_arrays`]). `kind` is a
+    /// constant at every call site of a program, and the `match` on it disappears when the
+    /// call is inlined; the call is always inlined, so that the compiler sees the fields of
+    /// the input from the start (inlined late, it had packed the input into one integer and
+    /// unpacked it again on every call).
     ///
     /// Why each kind equals the reference ([`super::IecTimerRef`]): `begin` is
     /// its `start` + `update` at one instant, `advance` its `update` of a running
@@ -308,7 +360,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     /// nothing, which is `idle`. Every path records the kind and IN, as the
     /// reference does after every call. A stopped timer has START = 0 already
     /// ([`IecState::is_valid`], which every structure satisfies).
-    #[inline]
+    #[inline(always)]
     fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
         let now = now.clock::<C>();
         let f = self.flags;
@@ -321,9 +373,9 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
             // TP: update; a rising IN with no pulse running starts one; stopped with IN = 0,
             // ET returns to 0. A pulse still running after the update ignores IN.
             IecKind::Tp => {
-                let (q, et) = if running {
+                if running {
                     let elapsed = now.elapsed_since(self.start);
-                    if elapsed < self.pt {
+                    if !reached(elapsed, self.pt) {
                         self.et = elapsed;
                         self.flags = flags | flag::RUNNING | flag::Q;
                         return IecOutput {
@@ -331,46 +383,49 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                             et: elapsed,
                         };
                     }
-                    // Expired on this update: ET = PT, Q = 0, stopped.
+                    // Expired on this update: ET = PT, Q = 0, stopped; then as a stopped timer.
                     self.start = C::ZERO;
-                    (false, self.pt)
-                } else {
-                    (f & flag::Q != 0, self.et)
-                };
-                if on & !was_in {
+                    if on && !was_in {
+                        return self.begin(now, input.pt, flags, true, false);
+                    }
+                    let et = if on { self.pt } else { C::ZERO };
+                    self.et = et;
+                    self.flags = flags;
+                    return IecOutput { q: false, et };
+                }
+                // Stopped: Q kept; with IN = 0, ET returns to 0; a rising IN starts a pulse;
+                // IN held at 1 keeps ET.
+                let q = f & flag::Q;
+                if !on {
+                    self.et = C::ZERO;
+                    self.flags = flags | q;
+                    return IecOutput {
+                        q: q != 0,
+                        et: C::ZERO,
+                    };
+                }
+                if !was_in {
                     return self.begin(now, input.pt, flags, true, false);
                 }
-                let et = if on { et } else { C::ZERO };
-                self.et = et;
-                self.flags = flags | if q { flag::Q } else { 0 };
-                IecOutput { q, et }
-            }
-            // TON: IN = 0 resets; a rising IN starts; else update. Written without a branch
-            // on IN or on the timer's state (`blend` and bit arithmetic), because TON is the
-            // timer of which a program has many: in an array of timers, IN and the state
-            // differ from one timer to the next and a branch on them is mispredicted about
-            // every other call. The reference's three cases are all computed: a rising IN
-            // replaces START and PT (its `start`), the update follows on the running timer
-            // (after a start it finds `elapsed = 0`, as the reference's), a stopped timer
-            // keeps ET and Q, and IN = 0 then forces START = ET = 0, Q = 0, stopped (its
-            // `reset_and_stop`; PT is unchanged on that path since a rise needs IN = 1).
-            IecKind::Ton => {
-                let rise = on & !was_in;
-                let start = blend(rise, now, self.start);
-                let pt = blend(rise, C::from_preset(input.pt.clamp_negative()), self.pt);
-                let run = running | rise;
-                let elapsed = now.elapsed_since(start);
-                let reached = elapsed >= pt;
-                let et = blend(run, blend(reached, pt, elapsed), self.et);
-                let q = (run & reached) | (!run & (f & flag::Q != 0));
-                let goes_on = run & !reached;
-                self.start = blend(on & goes_on, start, C::ZERO);
-                self.pt = pt;
-                self.et = blend(on, et, C::ZERO);
-                self.flags = flags | u8::from(on & q) << 1 | u8::from(on & goes_on) << 2;
+                self.flags = flags | q;
                 IecOutput {
-                    q: on & q,
+                    q: q != 0,
                     et: self.et,
+                }
+            }
+            // TON: IN = 0 resets; a rising IN starts; else update (the reference's `ton`).
+            // Branches on IN and on the state, which a timer called once per scan takes the
+            // same way scan after scan; for arrays of timers whose states differ, see
+            // [`IecTimerOf::ton_for_arrays`].
+            IecKind::Ton => {
+                if !on {
+                    self.clear(flags, false)
+                } else if !was_in {
+                    self.begin(now, input.pt, flags, false, true)
+                } else if running {
+                    self.advance(now, flags, false, true)
+                } else {
+                    self.idle(flags)
                 }
             }
             // TOF: IN = 1 resets with Q = 1; a falling IN starts; else update.
@@ -380,7 +435,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 } else if was_in {
                     self.begin(now, input.pt, flags, true, false)
                 } else if running {
-                    self.advance(now, flags, true, false, false)
+                    self.advance(now, flags, true, false)
                 } else {
                     self.idle(flags)
                 }
@@ -393,11 +448,46 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 if input.reset {
                     self.clear(flags, false)
                 } else if running {
-                    self.advance(now, flags, false, true, !on)
-                } else if on & (f & flag::Q == 0) {
+                    // The update, then with IN = 0 the pause.
+                    let elapsed = now.elapsed_since(self.start);
+                    if reached(elapsed, self.pt) {
+                        self.start = C::ZERO;
+                        self.et = self.pt;
+                        self.flags = flags | flag::Q;
+                        return IecOutput {
+                            q: true,
+                            et: self.pt,
+                        };
+                    }
+                    self.et = elapsed;
+                    if on {
+                        self.flags = flags | flag::RUNNING;
+                    } else {
+                        self.start = C::ZERO;
+                        self.flags = flags;
+                    }
+                    IecOutput {
+                        q: false,
+                        et: elapsed,
+                    }
+                } else if on && f & flag::Q == 0 {
+                    // Resume: the update that follows the reference's `start` finds `now -
+                    // START` = the accumulated ET (exactly: START = now - ET modulo 2^BITS), so
+                    // the timer has expired at once when ET reaches the new PT; else it runs
+                    // on from ET (its Q is 0 already).
+                    let pt = C::from_preset(input.pt.clamp_negative());
+                    self.pt = pt;
+                    if reached(self.et, pt) {
+                        self.et = pt;
+                        self.flags = flags | flag::Q;
+                        return IecOutput { q: true, et: pt };
+                    }
                     self.start = now.elapsed_since(self.et);
-                    self.pt = C::from_preset(input.pt.clamp_negative());
-                    self.advance(now, flags, false, true, false)
+                    self.flags = flags | flag::RUNNING;
+                    IecOutput {
+                        q: false,
+                        et: self.et,
+                    }
                 } else {
                     self.idle(flags)
                 }
@@ -445,5 +535,101 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
 
     fn state(&self) -> IecState<C> {
         self.abstraction()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps};
+    use crate::time::clock::ClockWord;
+    use crate::time::{CpuTime, Time};
+    use std::vec::Vec;
+
+    /// A 4-bit clock word, on which every structure can be enumerated.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord)]
+    struct U4(u8);
+
+    impl ClockWord for U4 {
+        const BITS: u32 = 4;
+        const ZERO: Self = U4(0);
+        const MAX: Self = U4(15);
+        fn elapsed_since(self, earlier: Self) -> Self {
+            U4(self.0.wrapping_sub(earlier.0) & 15)
+        }
+        fn advance(self, d: Self) -> Self {
+            U4(self.0.wrapping_add(d.0) & 15)
+        }
+        fn from_u64_wrapping(t_ms: u64) -> Self {
+            U4((t_ms & 15) as u8)
+        }
+        fn to_u64(self) -> u64 {
+            u64::from(self.0)
+        }
+        fn from_preset(millis: u32) -> Self {
+            U4(millis.min(15) as u8)
+        }
+    }
+
+    /// Every valid structure on the 4-bit clock.
+    fn all_states() -> Vec<IecState<U4>> {
+        let kinds = [
+            None,
+            Some(IecKind::Tp),
+            Some(IecKind::Ton),
+            Some(IecKind::Tof),
+            Some(IecKind::Tonr),
+        ];
+        let mut states = Vec::new();
+        for kind in kinds {
+            for bits in 0..8u8 {
+                for start in 0..16 {
+                    for pt in 0..16 {
+                        for et in 0..=pt {
+                            let s = IecState {
+                                kind,
+                                input: bits & 1 != 0,
+                                running: bits & 2 != 0,
+                                start: U4(start),
+                                pt: U4(pt),
+                                et: U4(et),
+                                q: bits & 4 != 0,
+                            };
+                            if s.is_valid() {
+                                states.push(s);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        states
+    }
+
+    /// `ton_for_arrays` equals `call(IecKind::Ton, ..)`: outputs and structure, from every
+    /// valid structure, at every clock reading (and across its wrap), with IN 0 and 1 and
+    /// presets negative, 0, in range and above the clock's range.
+    #[test]
+    fn ton_for_arrays_equals_call() {
+        let presets = [-7, -1, 0, 1, 2, 7, 14, 15, 16, 1_000].map(Time::from_millis);
+        for state in all_states() {
+            let timer = IecTimerOf::from_state(state).expect("a valid state");
+            for now in 0..20 {
+                let now = CpuTime::from_millis(now);
+                for on in [false, true] {
+                    for pt in presets {
+                        let input = IecInput::new(on, pt);
+                        let (mut a, mut b) = (timer, timer);
+                        let out = a.call(IecKind::Ton, now, input);
+                        assert_eq!(
+                            b.ton_for_arrays(now, input),
+                            out,
+                            "{state:?} {now:?} {input:?}"
+                        );
+                        assert_eq!(b, a, "{state:?} {now:?} {input:?}");
+                    }
+                }
+            }
+        }
     }
 }

@@ -113,15 +113,14 @@ impl<const N: usize> TimerMemory<N> {
     }
 
     /// `n` ticks of `base` for the whole area: every running timer of that base loses
-    /// `min(n, value)` units (S5TMR-TICK-01). One branch-free pass over the words, which LLVM
-    /// vectorizes.
+    /// `min(n, value)` units (S5TMR-TICK-01). One pass over the words, which LLVM vectorizes:
+    /// for one tick, 16 words at a time by subtraction alone unless one of them runs out
+    /// ([`TimerWord::tick_once`] then does those 16); for more, branch-free.
     pub fn tick(&mut self, base: TimeBase, n: u64) {
         let bits = u32::from(base.bits());
         if n == 1 {
             // The OS tick as it comes: one unit, the commonest case, with the least work.
-            for w in self.words.iter_mut() {
-                *w = w.tick_once(bits);
-            }
+            TimerWord::tick_once_all(&mut self.words, bits);
             return;
         }
         // A value is at most 999 units, so any count from 1 000 on acts as 1 000: the count

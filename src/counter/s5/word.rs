@@ -89,28 +89,49 @@ impl S5Counter {
     #[inline]
     #[must_use]
     pub const fn enable(self, rlo: bool) -> S5Counter {
+        // RLO 0: the memory takes 0. RLO 1 with the memory 1: no edge, nothing changes.
+        // Otherwise a rising RLO: the three memories cleared, the FR memory set.
         let w = self.0;
-        let rising = rlo && w & FR_PREV == 0;
-        let w = w & !bit(rising, CU_PREV | CD_PREV | S_PREV);
-        S5Counter((w & !FR_PREV) | bit(rlo, FR_PREV))
+        if !rlo {
+            return S5Counter(w & !FR_PREV);
+        }
+        if w & FR_PREV != 0 {
+            return self;
+        }
+        S5Counter((w & !(CU_PREV | CD_PREV | S_PREV)) | FR_PREV)
     }
 
     /// `CU C n` with RLO `rlo`: a rising RLO counts up, except at 999.
     #[inline]
     #[must_use]
     pub const fn count_up(self, rlo: bool) -> S5Counter {
+        // RLO 0: the memory takes 0. RLO 1 with the memory 1: no edge. A rising RLO sets the
+        // memory and adds 1 below 999 (CV is the low bits: no carry into the memories).
         let w = self.0;
-        let up = rlo && w & CU_PREV == 0 && w & CV < CV_MAX;
-        S5Counter(((w & !CU_PREV) | bit(rlo, CU_PREV)) + up as u16)
+        if !rlo {
+            return S5Counter(w & !CU_PREV);
+        }
+        if w & CU_PREV != 0 {
+            return self;
+        }
+        let up = w & CV < CV_MAX;
+        S5Counter((w | CU_PREV) + up as u16)
     }
 
     /// `CD C n` with RLO `rlo`: a rising RLO counts down, except at 0.
     #[inline]
     #[must_use]
     pub const fn count_down(self, rlo: bool) -> S5Counter {
+        // As `count_up`, subtracting 1 above 0 (no borrow from the memories).
         let w = self.0;
-        let down = rlo && w & CD_PREV == 0 && w & CV > 0;
-        S5Counter(((w & !CD_PREV) | bit(rlo, CD_PREV)) - down as u16)
+        if !rlo {
+            return S5Counter(w & !CD_PREV);
+        }
+        if w & CD_PREV != 0 {
+            return self;
+        }
+        let down = w & CV > 0;
+        S5Counter((w | CD_PREV) - down as u16)
     }
 
     /// `S C n` with RLO `rlo` and the preset `pv` in ACCU 1: a rising RLO sets CV to PV and
@@ -118,20 +139,27 @@ impl S5Counter {
     #[inline]
     #[must_use]
     pub const fn set(self, rlo: bool, pv: super::CounterPreset) -> S5Counter {
+        // RLO 0: the memory takes 0. RLO 1 with the memory 1: no edge. A rising RLO loads PV
+        // (at most 999, within the CV field), clears the CU and CD memories, sets its own.
         let w = self.0;
-        let w = if rlo && w & S_PREV == 0 {
-            (w & !(CV | CU_PREV | CD_PREV)) | pv.value()
-        } else {
-            w
-        };
-        S5Counter((w & !S_PREV) | bit(rlo, S_PREV))
+        if !rlo {
+            return S5Counter(w & !S_PREV);
+        }
+        if w & S_PREV != 0 {
+            return self;
+        }
+        S5Counter((w & !(CV | CU_PREV | CD_PREV)) | pv.value() | S_PREV)
     }
 
     /// `R C n` with RLO `rlo`: CV = 0 while 1.
     #[inline]
     #[must_use]
     pub const fn reset(self, rlo: bool) -> S5Counter {
-        S5Counter(self.0 & !bit(rlo, CV))
+        if rlo {
+            S5Counter(self.0 & !CV)
+        } else {
+            self
+        }
     }
 
     /// One box call `kind`: `FR`, `CU` (unless S_CD), `CD` (unless S_CU), `S`, `R`.
@@ -160,7 +188,11 @@ impl S5Counter {
 }
 
 impl S5CounterOps for S5Counter {
-    #[inline]
+    /// One box call: [`S5Counter::execute`], then the outputs. Each operation of the box
+    /// branches on its input and its edge memory, which for a counter called once per scan
+    /// go the same way most scans (measured faster than computing every operation with
+    /// masks, whose bit chains make each call wait for the previous one).
+    #[inline(always)]
     fn call(&mut self, kind: S5CounterKind, input: S5CounterInput) -> S5CounterOutput {
         *self = self.execute(kind, input);
         self.output()
