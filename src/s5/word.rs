@@ -278,8 +278,7 @@ impl TimerWord {
         // does with one more instruction per 4 words (measured 10 % slower).
         let offset = core::hint::black_box(BIAS.wrapping_sub(target + 1));
         let limit = (1023 ^ BIAS) as i32;
-        let (groups, rest) = words.as_chunks_mut::<16>();
-        for group in groups {
+        let tick_group = |group: &mut [TimerWord; 16]| {
             let mut ticked = [0u32; 16];
             let mut ends = false;
             for (t, w) in ticked.iter_mut().zip(group.iter()) {
@@ -296,9 +295,18 @@ impl TimerWord {
                     w.0 = t;
                 }
             }
+        };
+        let (groups, rest) = words.as_chunks_mut::<16>();
+        for group in groups {
+            tick_group(group);
         }
-        for w in rest {
-            *w = w.tick_once(base_bits);
+        // The last `len % 16` words: through the same code on a padded copy (the padding
+        // words are stopped timers, which a tick leaves as they are).
+        if !rest.is_empty() {
+            let mut group = [TimerWord::RESET; 16];
+            group[..rest.len()].copy_from_slice(rest);
+            tick_group(&mut group);
+            rest.copy_from_slice(&group[..rest.len()]);
         }
     }
 
