@@ -99,7 +99,8 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
             b.iec[k].run_stop_run(k.is_multiple_of(2));
         }
     }
-    b.ton_bank.scan(now, &[s, !s, i.is_multiple_of(3)], &[pt; 3]);
+    b.ton_bank
+        .scan(now, &[s, !s, i.is_multiple_of(3)], &[pt; 3]);
     sum += b.ton_bank.outputs().map(|o| u64::from(o.et)).sum::<u64>();
     if let Some(state) = b.ton_bank.get(1) {
         b.ton_bank.set(2, state);
@@ -159,8 +160,12 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     b.s5c_area.fr(3, s).expect("C 3 exists");
     b.s5c_area.cu(3, s).expect("C 3 exists");
     b.s5c_area.cd(3, i.is_multiple_of(3)).expect("C 3 exists");
-    b.s5c_area.set(3, i.is_multiple_of(40), pv).expect("C 3 exists");
-    b.s5c_area.reset(3, i.is_multiple_of(90)).expect("C 3 exists");
+    b.s5c_area
+        .set(3, i.is_multiple_of(40), pv)
+        .expect("C 3 exists");
+    b.s5c_area
+        .reset(3, i.is_multiple_of(90))
+        .expect("C 3 exists");
     sum += u64::from(b.s5c_area.load(3).unwrap_or(0) + b.s5c_area.load_bcd(3).unwrap_or(0));
     sum += u64::from(b.s5c_area.status(3).unwrap_or(false));
     sum
