@@ -536,7 +536,7 @@ fn iec_counter_impls<T: CounterInt>(
     v.push(("packed", p.state(), o));
     if kind == CounterKind::Ctud {
         let mut bank = CounterBank::<T, 1>::new();
-        assert!(bank.set(0, st));
+        assert!(bank.set_state(0, st));
         bank.scan(
             &BankInputs {
                 cu: &[i.cu],

@@ -716,7 +716,7 @@ fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (b
         q: state.q,
     };
     assert!(
-        bank.set(0, s32),
+        bank.set_state(0, s32),
         "IEC-BANK-01: the bank takes every valid TON state"
     );
     bank.scan(now, &[input.input], &[input.pt]);

@@ -103,7 +103,7 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
         .scan(now, &[s, !s, i.is_multiple_of(3)], &[pt; 3]);
     sum += b.ton_bank.outputs().map(|o| u64::from(o.et)).sum::<u64>();
     if let Some(state) = b.ton_bank.get(1) {
-        b.ton_bank.set(2, state);
+        b.ton_bank.set_state(2, state);
     }
 
     let ci = CounterInput {
@@ -141,7 +141,7 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
         .map(|o| o.cv.unsigned_abs() as u64)
         .sum::<u64>();
     if let Some(state) = b.ctr_bank.get(0) {
-        b.ctr_bank.set(1, state);
+        b.ctr_bank.set_state(1, state);
     }
 
     let sci = S5CounterInput {

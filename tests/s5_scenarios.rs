@@ -530,6 +530,6 @@ fn state_validity_lad_9_1_value_0_to_999() {
     assert!(S5TimerRef::from_state(at(1000), CpuTime::ZERO).is_none());
     assert!(S5Timer::from_state(at(1000), CpuTime::ZERO).is_none());
     let mut area = TimerMemory::<1>::new();
-    assert_eq!(area.set(0, at(1000)), Ok(false));
+    assert_eq!(area.set_state(0, at(1000)), Ok(false));
     assert_eq!(area.get(0), Ok(S5State::RESET), "refused: unchanged");
 }

@@ -71,7 +71,7 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
     }
 
     /// Puts counter `i` in `state`; `false` when `i` is out of range.
-    pub fn set(&mut self, i: usize, state: CounterState<T>) -> bool {
+    pub fn set_state(&mut self, i: usize, state: CounterState<T>) -> bool {
         if i >= N {
             return false;
         }

@@ -4,7 +4,7 @@
 //!
 //! IEC counters, one interface ([`CounterOps`]) and two implementations:
 //! - [`CounterRef`]: the rules one by one, as the manual states them.
-//! - [`Counter`]: CV and both edge memories in one small struct with a branch-free step,
+//! - [`Counter`]: CV and both edge memories in one small struct,
 //!
 //! and [`CounterBank`], thousands of CTUD counters scanned together.
 //!

@@ -10,7 +10,7 @@ use crate::time::{CpuTime, Time};
 const IN: u8 = 0b0001;
 const Q: u8 = 0b0010;
 const RUNNING: u8 = 0b0100;
-/// A running timer put in the bank by [`TonBank::set`], whose ET slot holds its ET (see
+/// A running timer put in the bank by [`TonBank::set_state`], whose ET slot holds its ET (see
 /// [`TonBank`]'s representation); cleared by the next scan.
 const EXPLICIT: u8 = 0b1000;
 
@@ -48,7 +48,7 @@ const LANES: usize = 16;
 /// ET is not stored: it is `now - START` for the clock `now` of the last scan (the bank keeps
 /// it), which is exactly what that scan's update computed (ET = elapsed while elapsed < PT); its
 /// ET slot holds its PT instead, the ET it will have when it expires, so that the expiry writes
-/// nothing there. A running timer put in the bank by [`TonBank::set`], whose ET need not be
+/// nothing there. A running timer put in the bank by [`TonBank::set_state`], whose ET need not be
 /// `now - START`, keeps its ET in the slot and a flag saying so until the next scan. The scan
 /// then needs, per timer, one subtraction, one compare and a few masks.
 #[derive(Clone, Debug)]
@@ -141,7 +141,7 @@ impl<const N: usize> TonBank<N> {
 
     /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `false`, and no change,
     /// when `i` is out of range or the state is not valid ([`IecState::is_valid`]).
-    pub fn set(&mut self, i: usize, state: IecState<u32>) -> bool {
+    pub fn set_state(&mut self, i: usize, state: IecState<u32>) -> bool {
         if i >= N || !state.is_valid() {
             return false;
         }
@@ -339,7 +339,7 @@ mod tests {
         }
     }
 
-    /// A valid structure of any kind's making (for `set`): running or stopped, any IN and Q.
+    /// A valid structure of any kind's making (for `set_state`): running or stopped, any IN and Q.
     fn any_state(rng: &mut Rng) -> IecState<u32> {
         let pt = rng.below(60) as u32;
         let running = rng.below(2) == 0;
@@ -356,7 +356,7 @@ mod tests {
 
     /// `N` timers (full groups of 16 and a shorter last group) scanned with random inputs and
     /// presets (negative, 0, small), random scan intervals (across the 2^32 ms wrap of the
-    /// clock), and now and then a timer put in any valid state by `set`: every timer's
+    /// clock), and now and then a timer put in any valid state by `set_state`: every timer's
     /// outputs and state equal a reference TON called once per scan.
     fn bank_equals_reference<const N: usize>(seed: u64) {
         let mut rng = Rng(seed);
@@ -372,7 +372,7 @@ mod tests {
                 if rng.below(50) == 0 {
                     let s = any_state(&mut rng);
                     *r = IecTimerRef::from_state(s).expect("a valid state");
-                    assert!(bank.set(i, s));
+                    assert!(bank.set_state(i, s));
                     let kind = bank.get(i).and_then(|b| b.kind);
                     assert_eq!(bank.get(i), Some(IecState { kind, ..s }));
                 }
@@ -406,7 +406,7 @@ mod tests {
     }
 
     /// Equality is that of the timers, whatever their representation: a running timer put in
-    /// by `set` (its ET stored) equals the same timer reached by a scan (its ET derived).
+    /// by `set_state` (its ET stored) equals the same timer reached by a scan (its ET derived).
     #[test]
     fn equality_is_of_the_timers() {
         let pt = [Time::from_millis(100)];
@@ -415,7 +415,7 @@ mod tests {
         scanned.scan(CpuTime::from_millis(40), &[true], &pt);
         let mut set = TonBank::<1>::new();
         set.scan(CpuTime::from_millis(0), &[false], &pt);
-        assert!(set.set(0, scanned.get(0).expect("timer 0")));
+        assert!(set.set_state(0, scanned.get(0).expect("timer 0")));
         assert_eq!(set.get(0), scanned.get(0));
         assert_eq!(set, scanned);
         assert_eq!(scanned.output(0).map(|o| o.et), Some(30));

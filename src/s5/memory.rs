@@ -88,7 +88,7 @@ impl<const N: usize> TimerMemory<N> {
     }
 
     /// Puts timer `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
-    pub fn set(&mut self, index: usize, state: S5State) -> Result<bool, NoSuchOperand> {
+    pub fn set_state(&mut self, index: usize, state: S5State) -> Result<bool, NoSuchOperand> {
         let w = self.word(index)?;
         Ok(match TimerWord::from_state(state) {
             Some(new) => {
