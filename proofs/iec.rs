@@ -670,6 +670,8 @@ pub enum IecImpl {
     Structure,
     /// `TonBank` (TON calls on the 32-bit clock only).
     Bank,
+    /// `IecTimerOf::ton_for_arrays` (TON calls only), the array form of the structure's call.
+    TonForArrays,
 }
 
 /// `op` from `state` through `imp`: the state after and the outputs (Q, ET), or `None` when the
@@ -691,6 +693,14 @@ pub fn iec_run<C: ClockWord>(
             Some((t.state(), out))
         }
         IecImpl::Bank => bank_run(state, op),
+        IecImpl::TonForArrays => {
+            let Op::Call(IecKind::Ton, now, input) = op else {
+                return None;
+            };
+            let mut t = IecTimerOf::from_state(state).expect("valid");
+            let out = t.ton_for_arrays(now, input);
+            Some((t.state(), (out.q, out.et)))
+        }
     }
 }
 
@@ -1120,7 +1130,12 @@ fn call_rules<C: ClockWord>(
 /// Every IEC rule through every implementation (the harness body).
 pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
     let mut checked = false;
-    for imp in [IecImpl::Reference, IecImpl::Structure, IecImpl::Bank] {
+    for imp in [
+        IecImpl::Reference,
+        IecImpl::Structure,
+        IecImpl::Bank,
+        IecImpl::TonForArrays,
+    ] {
         checked |= check_iec_rules(imp, st, op);
     }
     checked
@@ -1245,12 +1260,13 @@ fn exhaustive_u8_wrap_rules() {
     });
 }
 
-/// The bolero harness of every IEC rule on the 32-bit clock (reference, structure, bank):
-/// random states and operations under `cargo test`, every valid state and operation under
-/// Kani. `#[kani::unwind(4)]`: the loop over the three implementations (3 iterations and its
-/// exit); the bank's scan loops over its one timer (1 iteration).
+/// The bolero harness of every IEC rule on the 32-bit clock (reference, structure, bank,
+/// `ton_for_arrays`): random states and operations under `cargo test`, every valid state and
+/// operation under Kani. `#[kani::unwind(17)]`: the bank's scan takes its one timer through the
+/// group code on a padded copy of 16 timers (loops of 16 iterations, and the loop over the
+/// rising edges, at most 16) and its exit; the loop over the 4 implementations is shorter.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_iec_rules() {
     bolero::check!()
         .with_type::<(IecState<u32>, Op)>()
@@ -1361,10 +1377,11 @@ fn kani_step_equivalence() {
 }
 
 /// IEC-BANK-01: a bank of 4 TONs over 3 scans of any inputs, presets and times against 4
-/// reference TONs (`#[kani::unwind(5)]`: the scan's and the check's loops over 4 timers, and
-/// the 3 scans, each with its exit).
+/// reference TONs (`#[kani::unwind(17)]`: the scan takes the 4 timers through the group code on
+/// a padded copy of 16 (loops of 16 iterations, the rising edges at most 16), the check's loop
+/// over 4 timers and the 3 scans are shorter; each with its exit).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_bank() {
     bolero::check!()
         .with_type::<(u32, [u32; 3], [[bool; 4]; 3], [Time; 4])>()

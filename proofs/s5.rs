@@ -1210,10 +1210,12 @@ fn exhaustive_s5_rules() {
 }
 
 /// The bolero harness of every S5 rule: random cases under `cargo test`, a proof over every
-/// kind, valid state, tick count and input under Kani (no loop but the three implementations:
-/// `#[kani::unwind(4)]` covers the loop over `IMPLS` (3 iterations under Kani) plus its exit).
+/// kind, valid state, tick count and input under Kani. `#[kani::unwind(17)]`: the longest loops
+/// are the area tick's for one tick (`TimerWord::tick_once_all` takes the area's words in groups
+/// of 16, the last ones on a padded copy: 16 iterations per loop) and its exit; the others are
+/// shorter (the loop over `IMPLS`, 3 under Kani; the area's 2 words for more than one tick).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_s5_rules() {
     bolero::check!()
         .with_type::<S5Case>()
@@ -1251,10 +1253,11 @@ fn kani_cell_word() {
         });
 }
 
-/// S5-AREA-01 on a four-timer area: `#[kani::unwind(5)]` covers the area's loop over its 4
-/// words and the check's loop over the 4 timers, each with its exit.
+/// S5-AREA-01 on a four-timer area: `#[kani::unwind(17)]` covers the one-tick path's loops over
+/// a padded group of 16 words (the area's 4 words are copied into one), the loop over the 4 words
+/// for more ticks, and the check's loop over the 4 timers, each with its exit.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_area_tick() {
     bolero::check!()
         .with_type::<([S5State; 4], TimeBase, u64)>()
@@ -1330,11 +1333,12 @@ pub fn prop_advance_to(states: [S5State; 3], from: u32, dt: u32) {
     }
 }
 
-/// `advance_to` over three timers: `#[kani::unwind(5)]` covers its loop over the 3 words, its
-/// loop over the 4 time bases (`TimeBase::ALL`), the per-base tick's loop over the 3 words and
-/// the check's loop over the 3 timers, each with its exit (at most 4 + 1).
+/// `advance_to` over three timers: `#[kani::unwind(17)]` covers its loop over the 4 time bases
+/// (`TimeBase::ALL`), the one-tick path's loops over a padded group of 16 words, the loop over
+/// the 3 words for more ticks, and the check's loop over the 3 timers, each with its exit (at
+/// most 16 + 1).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_advance_to() {
     bolero::check!()
         .with_type::<([S5State; 3], u32, u32)>()
@@ -1344,10 +1348,11 @@ fn kani_advance_to() {
 
 /// S5-EQUIV-02: every sequence of three executions from power-up (any inputs and TVs, time
 /// steps from a tick-boundary set) through the reference, an `S5Timer`, the area's box and its
-/// STL operations. `#[kani::unwind(5)]`: the sequence loop runs 3 times and `advance_to` loops
-/// over the 4 time bases (the bound is the larger, 4, plus the exit); the area has one word.
+/// STL operations. `#[kani::unwind(17)]`: the sequence loop runs 3 times, `advance_to` loops
+/// over the 4 time bases, and a one-tick pass over the area's one word runs the group code on
+/// a padded copy of 16 words (the bound is the largest, 16, plus the exit).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_sequence_equivalence() {
     const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
     bolero::check!()
