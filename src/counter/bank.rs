@@ -8,6 +8,14 @@ const CU_PREV: u8 = 0b01;
 const CD_PREV: u8 = 0b10;
 
 /// The inputs of one scan of a [`CounterBank`]: input `x[i]` belongs to counter `i`.
+///
+/// ```
+/// use plc_timers::counter::{BankInputs, CounterBank};
+/// let (on, off) = ([true; 2], [false; 2]);
+/// let mut bank = CounterBank::<u8, 2>::new();
+/// bank.scan(&BankInputs { cu: &on, cd: &off, r: &off, ld: &off }, 1);
+/// assert_eq!(bank.output(1, 1).map(|o| o.qu), Some(true));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BankInputs<'a, const N: usize> {
     /// CU of every counter.
@@ -53,6 +61,12 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
     pub const LEN: usize = N;
 
     /// A bank of new counters.
+    ///
+    /// ```
+    /// use plc_timers::counter::CounterBank;
+    /// let bank = CounterBank::<i32, 100>::new();
+    /// assert!(bank.outputs(0).all(|o| o.cv == 0 && o.qu));
+    /// ```
     pub const fn new() -> CounterBank<T, N> {
         CounterBank {
             cv: [T::ZERO; N],

@@ -32,6 +32,11 @@ const fn edge_bits(cu: bool, cd: bool) -> u8 {
 
 impl<T: CounterInt> Counter<T> {
     /// A new counter (CV = 0, no edge seen).
+    ///
+    /// ```
+    /// use plc_timers::counter::{Counter, CounterOps};
+    /// assert_eq!(Counter::<u64>::new().state().cv, 0);
+    /// ```
     pub const fn new() -> Counter<T> {
         Counter {
             cv: T::ZERO,
@@ -40,6 +45,13 @@ impl<T: CounterInt> Counter<T> {
     }
 
     /// The counter holding `state` (every state is representable).
+    ///
+    /// ```
+    /// use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps, CounterState};
+    /// let mut c = Counter::from_state(CounterState { cv: 0u8, cu_prev: false, cd_prev: false });
+    /// let down = CounterInput { cd: true, pv: 0, ..Default::default() };
+    /// assert_eq!(c.call(CounterKind::Ctd, down).cv, 0); // USINT stays at its minimum
+    /// ```
     pub const fn from_state(state: CounterState<T>) -> Counter<T> {
         Counter {
             cv: state.cv,

@@ -88,6 +88,12 @@ impl<const N: usize> TonBank<N> {
     pub const LEN: usize = N;
 
     /// A bank of new timers (every structure zero).
+    ///
+    /// ```
+    /// use plc_timers::iec::TonBank;
+    /// let bank = TonBank::<10>::new();
+    /// assert_eq!(bank.outputs().filter(|o| o.q).count(), 0);
+    /// ```
     pub const fn new() -> TonBank<N> {
         TonBank {
             start: [0; N],

@@ -74,6 +74,17 @@ pub struct IecTimerOf<C> {
 }
 
 /// The S7-1200 `IEC_TIMER`: the structure on the 32-bit millisecond clock.
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
+/// use plc_timers::time::CpuTime;
+/// let mut t = IecTimer::new();
+/// // The 32-bit clock wraps: a TON started 100 ms before the wrap runs out 400 ms after it.
+/// let start = CpuTime::from_millis(u64::from(u32::MAX) - 99);
+/// let pt = plc_timers::time!("T#500MS");
+/// t.call(IecKind::Ton, start, IecInput::new(true, pt));
+/// assert!(t.call(IecKind::Ton, start.add_millis(500), IecInput::new(true, pt)).q);
+/// ```
 pub type IecTimer = IecTimerOf<u32>;
 
 // The manual's size, checked at compile time.
@@ -81,6 +92,12 @@ const _: () = assert!(core::mem::size_of::<IecTimer>() == 16);
 
 impl<C: ClockWord> IecTimerOf<C> {
     /// The initial structure (all zero).
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecTimerOf, IecTimerOps};
+    /// const T: IecTimerOf<u32> = IecTimerOf::new();
+    /// assert_eq!(T.state(), Default::default());
+    /// ```
     pub const fn new() -> IecTimerOf<C> {
         IecTimerOf {
             start: C::ZERO,
@@ -92,6 +109,13 @@ impl<C: ClockWord> IecTimerOf<C> {
 
     /// The structure holding `state`, or `None` if `state` violates [`IecState::is_valid`].
     /// The inverse of [`IecTimerOps::state`].
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecKind, IecState, IecTimer, IecTimerOps};
+    /// let expired = IecState::<u32> { kind: Some(IecKind::Ton), input: true, pt: 50, et: 50, q: true, ..Default::default() };
+    /// assert_eq!(IecTimer::from_state(expired).map(|t| t.state()), Some(expired));
+    /// assert!(IecTimer::from_state(IecState { start: 3, ..expired }).is_none()); // START kept while stopped
+    /// ```
     pub fn from_state(state: IecState<C>) -> Option<IecTimerOf<C>> {
         if !state.is_valid() {
             return None;

@@ -59,6 +59,12 @@ impl<const N: usize> TimerMemory<N> {
     pub const LEN: usize = N;
 
     /// An area of cleared timers at CPU time 0.
+    ///
+    /// ```
+    /// use plc_timers::s5::TimerMemory;
+    /// let area: TimerMemory = TimerMemory::new(); // 256 timers, as LAD can address
+    /// assert_eq!((TimerMemory::<256>::LEN, area.status(255)), (256, Ok(false)));
+    /// ```
     pub const fn new() -> TimerMemory<N> {
         TimerMemory {
             words: [TimerWord::RESET; N],
@@ -68,6 +74,15 @@ impl<const N: usize> TimerMemory<N> {
 
     /// An area holding `words`, with the OS ticks applied up to `now` (for restoring a saved
     /// area, and for the proofs).
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5Input, S5Kind, TimerMemory, TimerWord};
+    /// use plc_timers::time::CpuTime;
+    /// let running = TimerWord::RESET.execute(S5Kind::SPext, S5Input::new(true, false, plc_timers::s5time!("S5T#1S")));
+    /// let mut area = TimerMemory::from_words([running, TimerWord::RESET], CpuTime::from_millis(5_000));
+    /// area.advance_to(CpuTime::from_millis(5_300)); // S5T#1S is 100 units of 10 ms: 30 ticks
+    /// assert_eq!(area.load(0), Ok(70));
+    /// ```
     pub const fn from_words(words: [TimerWord; N], now: CpuTime) -> TimerMemory<N> {
         TimerMemory { words, now }
     }

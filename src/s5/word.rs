@@ -115,6 +115,13 @@ impl TimerWord {
 
     /// The word with bits `bits`, or `None` when it is not a valid state: a value field above
     /// 999, a bit outside the fields, or an expiry status on a stopped timer.
+    ///
+    /// ```
+    /// use plc_timers::s5::TimerWord;
+    /// let w = TimerWord::from_bits(0x0003_207F).expect("running, Q = 1, 127 (binary) units of 1 s");
+    /// assert_eq!((w.value(), w.q(), w.is_running()), (127, true, true));
+    /// assert!(TimerWord::from_bits(0x0004_0000).is_none()); // an expiry status on a stopped timer
+    /// ```
     pub const fn from_bits(bits: u32) -> Option<TimerWord> {
         let valid = bits & !USED == 0
             && bits & VALUE <= 999
@@ -132,6 +139,12 @@ impl TimerWord {
     }
 
     /// The word holding `state`, or `None` when the state is not valid.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5State, TimerWord};
+    /// let state = S5State { value: 999, ..S5State::RESET };
+    /// assert_eq!(TimerWord::from_state(state).map(TimerWord::state), Some(state));
+    /// ```
     pub const fn from_state(state: S5State) -> Option<TimerWord> {
         if !state.is_valid() {
             return None;
@@ -394,6 +407,11 @@ pub struct S5Timer {
 
 impl S5Timer {
     /// A cleared timer whose previous execution was at CPU time 0.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5State, S5Timer, S5TimerOps};
+    /// assert_eq!(S5Timer::new().state(), S5State::RESET);
+    /// ```
     pub const fn new() -> S5Timer {
         S5Timer {
             word: TimerWord::RESET,
@@ -403,6 +421,16 @@ impl S5Timer {
 
     /// The timer in `state` whose previous execution was at `last_call`, or `None` when the
     /// state is not valid.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps};
+    /// use plc_timers::time::{CpuTime, TimeBase};
+    /// // A stopped S_PULSE that kept 40 units of 10 ms; its last call was at 1 s.
+    /// let kept = S5State { value: 40, base: TimeBase::Ms10, ..S5State::RESET };
+    /// let mut t = S5Timer::from_state(kept, CpuTime::from_millis(1_000)).expect("valid");
+    /// let out = t.call(S5Kind::SPulse, CpuTime::from_millis(2_000), S5Input::new(false, false, plc_timers::s5time!("S5T#1S")));
+    /// assert_eq!(out.bi, 40); // a stopped timer ignores the ticks
+    /// ```
     pub const fn from_state(state: S5State, last_call: CpuTime) -> Option<S5Timer> {
         match TimerWord::from_state(state) {
             Some(word) => Some(S5Timer { word, last_call }),

@@ -44,6 +44,12 @@ impl<const N: usize> CounterMemory<N> {
     pub const LEN: usize = N;
 
     /// An area of cleared counters.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::CounterMemory;
+    /// let area = CounterMemory::<8>::new();
+    /// assert_eq!(area.load(7), Ok(0));
+    /// ```
     pub const fn new() -> CounterMemory<N> {
         CounterMemory {
             words: [S5Counter::new(); N],

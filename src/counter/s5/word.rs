@@ -42,11 +42,22 @@ pub struct S5Counter(u16);
 
 impl S5Counter {
     /// A new counter: CV = 0, every edge memory 0.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5Counter, S5CounterOps, S5CounterState};
+    /// assert_eq!(S5Counter::new().state(), S5CounterState::RESET);
+    /// ```
     pub const fn new() -> S5Counter {
         S5Counter(0)
     }
 
     /// The word with bits `bits`, or `None` when CV exceeds 999 or bits 11-10 are set.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::S5Counter;
+    /// assert_eq!(S5Counter::from_bits(0x1005).map(|w| w.output().cv), Some(5)); // CU memory set, CV 5
+    /// assert!(S5Counter::from_bits(1000).is_none());
+    /// ```
     pub const fn from_bits(bits: u16) -> Option<S5Counter> {
         if bits & !USED == 0 && bits & CV <= CV_MAX {
             Some(S5Counter(bits))
@@ -61,6 +72,12 @@ impl S5Counter {
     }
 
     /// The word holding `state`, if CV <= 999.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5Counter, S5CounterState};
+    /// let w = S5Counter::from_state(S5CounterState { cv: 999, cu_prev: true, ..S5CounterState::RESET });
+    /// assert_eq!(w.map(S5Counter::bits), Some(0x13E7));
+    /// ```
     pub const fn from_state(state: S5CounterState) -> Option<S5Counter> {
         if !state.is_valid() {
             return None;
