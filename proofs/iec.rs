@@ -1127,9 +1127,15 @@ fn call_rules<C: ClockWord>(
     }
 }
 
-/// Every IEC rule through every implementation (the harness body).
+/// Every IEC rule through every implementation (the harness body), and each implementation's
+/// step equal to the reference's (IEC-STRUCT-01 for the structure and its array form
+/// `ton_for_arrays`, IEC-BANK-01 for the bank's TON, against `IecTimerRef`).
 pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
     let mut checked = false;
+    let reference = st
+        .is_valid()
+        .then(|| iec_run(IecImpl::Reference, st, op))
+        .flatten();
     for imp in [
         IecImpl::Reference,
         IecImpl::Structure,
@@ -1137,6 +1143,17 @@ pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
         IecImpl::TonForArrays,
     ] {
         checked |= check_iec_rules(imp, st, op);
+        if let (Some(r), Some(x)) = (
+            reference,
+            st.is_valid().then(|| iec_run(imp, st, op)).flatten(),
+        ) {
+            let id = if imp == IecImpl::Bank {
+                "IEC-BANK-01"
+            } else {
+                "IEC-STRUCT-01"
+            };
+            assert_eq!(x, r, "{id}: {imp:?} equals the reference: {st:?} {op:?}");
+        }
     }
     checked
 }

@@ -319,8 +319,8 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// on IN or on the timer's state, which differ from one timer to the next in such a loop
     /// (a branch on them would be mispredicted about every other timer); one branch on the
     /// rising edge of IN, which a timer sees once per switching on. Same outputs and same
-    /// structure afterwards as [`IecTimerOps::call`] (this module's tests compare the two on
-    /// every structure of a 4-bit clock). `call` is faster for a timer called once per scan,
+    /// structure afterwards as [`IecTimerOps::call`] (`proofs/iec.rs` compares it with the reference on
+    /// every structure and operation of a 4-bit clock). `call` is faster for a timer called once per scan,
     /// whose branches go the same way scan after scan.
     ///
     /// Why it equals the reference's `ton`: a rise is `begin`, the reference's `start` and
@@ -559,101 +559,5 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
 
     fn state(&self) -> IecState<C> {
         self.abstraction()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    extern crate std;
-    use super::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps};
-    use crate::time::clock::ClockWord;
-    use crate::time::{CpuTime, Time};
-    use std::vec::Vec;
-
-    /// A 4-bit clock word, on which every structure can be enumerated.
-    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord)]
-    struct U4(u8);
-
-    impl ClockWord for U4 {
-        const BITS: u32 = 4;
-        const ZERO: Self = U4(0);
-        const MAX: Self = U4(15);
-        fn elapsed_since(self, earlier: Self) -> Self {
-            U4(self.0.wrapping_sub(earlier.0) & 15)
-        }
-        fn advance(self, d: Self) -> Self {
-            U4(self.0.wrapping_add(d.0) & 15)
-        }
-        fn from_u64_wrapping(t_ms: u64) -> Self {
-            U4((t_ms & 15) as u8)
-        }
-        fn to_u64(self) -> u64 {
-            u64::from(self.0)
-        }
-        fn from_preset(millis: u32) -> Self {
-            U4(millis.min(15) as u8)
-        }
-    }
-
-    /// Every valid structure on the 4-bit clock.
-    fn all_states() -> Vec<IecState<U4>> {
-        let kinds = [
-            None,
-            Some(IecKind::Tp),
-            Some(IecKind::Ton),
-            Some(IecKind::Tof),
-            Some(IecKind::Tonr),
-        ];
-        let mut states = Vec::new();
-        for kind in kinds {
-            for bits in 0..8u8 {
-                for start in 0..16 {
-                    for pt in 0..16 {
-                        for et in 0..=pt {
-                            let s = IecState {
-                                kind,
-                                input: bits & 1 != 0,
-                                running: bits & 2 != 0,
-                                start: U4(start),
-                                pt: U4(pt),
-                                et: U4(et),
-                                q: bits & 4 != 0,
-                            };
-                            if s.is_valid() {
-                                states.push(s);
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        states
-    }
-
-    /// `ton_for_arrays` equals `call(IecKind::Ton, ..)`: outputs and structure, from every
-    /// valid structure, at every clock reading (and across its wrap), with IN 0 and 1 and
-    /// presets negative, 0, in range and above the clock's range.
-    #[test]
-    fn ton_for_arrays_equals_call() {
-        let presets = [-7, -1, 0, 1, 2, 7, 14, 15, 16, 1_000].map(Time::from_millis);
-        for state in all_states() {
-            let timer = IecTimerOf::from_state(state).expect("a valid state");
-            for now in 0..20 {
-                let now = CpuTime::from_millis(now);
-                for on in [false, true] {
-                    for pt in presets {
-                        let input = IecInput::new(on, pt);
-                        let (mut a, mut b) = (timer, timer);
-                        let out = a.call(IecKind::Ton, now, input);
-                        assert_eq!(
-                            b.ton_for_arrays(now, input),
-                            out,
-                            "{state:?} {now:?} {input:?}"
-                        );
-                        assert_eq!(b, a, "{state:?} {now:?} {input:?}");
-                    }
-                }
-            }
-        }
     }
 }
