@@ -319,9 +319,9 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// on IN or on the timer's state, which differ from one timer to the next in such a loop
     /// (a branch on them would be mispredicted about every other timer); one branch on the
     /// rising edge of IN, which a timer sees once per switching on. Same outputs and same
-    /// structure afterwards as [`IecTimerOps::call`] (`proofs/iec.rs` compares it with the reference on
-    /// every structure and operation of a 4-bit clock). `call` is faster for a timer called once per scan,
-    /// whose branches go the same way scan after scan.
+    /// structure afterwards as [`IecTimerOps::call`] (`proofs/iec.rs` compares it with the
+    /// reference on every structure and operation of a 4-bit clock). `call` is faster for a
+    /// timer called once per scan, whose branches go the same way scan after scan.
     ///
     /// Why it equals the reference's `ton`: a rise is `begin`, the reference's `start` and
     /// `update` at one instant (see there). Otherwise both remaining cases are computed and
