@@ -106,10 +106,10 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
 
     /// One scan: every counter called once as CTUD with preset `pv`.
     ///
-    /// One pass over the arrays with the same straight-line code for every counter: both
-    /// saturating steps are computed and the inputs select, without a branch, so that LLVM
-    /// vectorizes the loop (8 INT counters per 128-bit instruction) and random edges cost no
-    /// misprediction.
+    /// One pass over the arrays with the same straight-line code for every counter: the edges
+    /// give a 0/1 increment and decrement, applied by one saturating add and one saturating
+    /// subtract, and R and LD select, without a branch, so that LLVM vectorizes the loop (8 INT
+    /// counters per 128-bit instruction) and random edges cost no misprediction.
     ///
     /// Why it equals the reference's CTUD ([`super::CounterRef`]): `up` and `down` are its
     /// edges (the input 1, its memory 0); both memories take the inputs on every call, also
@@ -131,15 +131,9 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
             let up = u8::from(cu) & !e & CU_PREV;
             let down = u8::from(cd) & !(e >> 1) & 1;
             *edges = (u8::from(cu) * CU_PREV) | (u8::from(cd) * CD_PREV);
-            let v = *cv;
-            // `up > down`: up alone; `down > up`: down alone.
-            let counted = if up > down {
-                v.saturating_inc()
-            } else if down > up {
-                v.saturating_dec()
-            } else {
-                v
-            };
+            // Up alone adds 1, down alone subtracts 1: one saturating add and one saturating
+            // subtract per lane (`paddsw`/`psubsw` for INT), no select between two results.
+            let counted = cv.saturating_up_down(up & !down, down & !up);
             *cv = if !(r | ld) {
                 counted
             } else if r {

@@ -55,6 +55,19 @@ pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
     fn saturating_inc(self) -> Self;
     /// `self - 1`, staying at `MIN`.
     fn saturating_dec(self) -> Self;
+    /// `self + up - down` for `up`, `down` in `{0, 1}`, not both 1, each step saturating as in
+    /// [`saturating_inc`](Self::saturating_inc) and [`saturating_dec`](Self::saturating_dec).
+    ///
+    /// Straight-line code (a saturating add and a saturating subtract) for the counter bank's
+    /// vector lanes.
+    ///
+    /// ```
+    /// use plc_timers::counter::CounterInt;
+    /// assert_eq!(7u16.saturating_up_down(1, 0), 8);
+    /// assert_eq!(0u16.saturating_up_down(0, 1), 0);
+    /// assert_eq!(i8::MAX.saturating_up_down(1, 0), i8::MAX);
+    /// ```
+    fn saturating_up_down(self, up: u8, down: u8) -> Self;
     /// The value as an `i128` (every type fits).
     fn to_i128(self) -> i128;
     /// The value `v` if it is in the type's range.
@@ -75,6 +88,10 @@ macro_rules! counter_int {
             #[inline]
             fn saturating_dec(self) -> Self {
                 self.saturating_sub(1)
+            }
+            #[inline]
+            fn saturating_up_down(self, up: u8, down: u8) -> Self {
+                self.saturating_add(up as $t).saturating_sub(down as $t)
             }
             #[inline]
             fn to_i128(self) -> i128 {
