@@ -119,6 +119,55 @@ fn ton_q_rises_at_expiry_and_et_ramps() {
     );
 }
 
+/// CLI-DIAG-01: the value axis spans every value drawn, negative ones too, with ticks on whole
+/// multiples of a 1-2-5 step giving at most about four intervals. CTD loaded with PV = 2 and
+/// counted down five times runs CV from 2 to -3: a span of 5, so the step is 2 (5 / 4 = 1.25
+/// rounded up to 1-2-5) and the ticks are the multiples of 2 in [-3, 2], drawn from the bottom up.
+#[test]
+fn value_axis_covers_negative_counts() {
+    let mut trace = String::from("t_ms,CD,LD\n0,0,1\n10,0,0\n");
+    for k in 0..5u64 {
+        trace.push_str(&format!("{},1,0\n{},0,0\n", 20 + 20 * k, 30 + 20 * k));
+    }
+    let (svg, _) = draw(
+        BlockSpec::new(Block::Ctd),
+        &[("pv", "2")],
+        trace.as_bytes(),
+        Window::default(),
+    );
+    // Each tick is one line of the SVG: its mark (`<line … y1="Y" …/>`) then its label.
+    let ticks: Vec<(i64, f64)> = svg
+        .lines()
+        .filter(|l| l.contains("class=\"tick\""))
+        .map(|l| {
+            let y = l.split("y1=\"").nth(1).and_then(|r| r.split('"').next());
+            let v = l.rsplit("\">").next().and_then(|r| r.split('<').next());
+            (
+                v.and_then(|v| v.parse().ok()).expect("a tick value"),
+                y.and_then(|y| y.parse().ok()).expect("a tick y"),
+            )
+        })
+        .collect();
+    let values: Vec<i64> = ticks.iter().map(|t| t.0).collect();
+    assert_eq!(values, [-2, 0, 2], "{svg}");
+    let gaps: Vec<f64> = ticks.windows(2).map(|w| w[0].1 - w[1].1).collect();
+    assert!(
+        gaps.iter().all(|g| *g > 0.0 && (g - gaps[0]).abs() < 0.11),
+        "ticks evenly spaced, upwards: {ticks:?}"
+    );
+    let cv = polyline(&svg, "ramp", "CV");
+    let (lowest, highest) = cv.iter().fold((f64::MIN, f64::MAX), |(lo, hi), p| {
+        (lo.max(p.1), hi.min(p.1))
+    });
+    let span = ticks[0].1 - ticks[2].1;
+    // CV = 2 is the top tick; CV = -3 lies half a step below the -2 tick.
+    assert!((highest - ticks[2].1).abs() < 0.11, "{cv:?} {ticks:?}");
+    assert!(
+        (lowest - (ticks[0].1 + span / 4.0)).abs() < 0.11,
+        "{cv:?} {ticks:?}"
+    );
+}
+
 /// Glitches of IN (1 ms at 1) inside its long 0 stretches.
 const GLITCHES: [u64; 4] = [100_001, 333_333, 1_300_001, 1_777_777];
 /// Dips of IN (1 ms at 0) inside its long 1 stretches.

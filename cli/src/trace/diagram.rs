@@ -468,21 +468,20 @@ fn render(d: &Diagram) -> String {
         .count();
     let bools = d.lanes.len() - ramps;
     let height = TOP + bools as f64 * BOOL_LANE + ramps as f64 * VALUE_LANE + AXIS;
-    // Offsets from the origin; the labels add it back.
+    // Times are offsets from the origin, so the drawing starts at 0; the labels add it back.
     let origin = d.origin.unwrap_or(0);
-    let t0 = 0.0;
     let last = d
         .window
         .to
         .map_or(d.last_t as f64, |t| t.saturating_sub(origin) as f64);
-    let span = (last - t0).max(1.0);
+    let span = last.max(1.0);
     let t_end = if d.window.to.is_some() {
-        last.max(t0 + 1.0)
+        last.max(1.0)
     } else {
         last + (span * 0.08).max(1.0)
     };
     let plot = WIDTH - LEFT - RIGHT;
-    let x = move |t: f64| LEFT + (t - t0) / (t_end - t0) * plot;
+    let x = move |t: f64| LEFT + t / t_end * plot;
     let mut s = String::new();
     let _ = write!(
         s,
@@ -510,7 +509,8 @@ fn render(d: &Diagram) -> String {
         "<text x=\"{LEFT}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
         escape(&title)
     );
-    if d.buckets.is_none() && d.exact.len() <= ROW_LINES {
+    // `exact` is empty once the drawing is made of buckets.
+    if d.exact.len() <= ROW_LINES {
         for e in &d.exact {
             let xt = x(e.t as f64);
             let _ = writeln!(
@@ -558,7 +558,8 @@ fn render(d: &Diagram) -> String {
             LaneKind::Ramp(_) => {
                 let (lo_v, hi_v) = extent(k);
                 let (plo, phi) = extent(d.preset_lane);
-                let (lo_v, hi_v) = (lo_v.min(plo), hi_v.max(phi).max(lo_v.min(plo) + 1));
+                // Both extents span at least 0..=1, so `hi_v > lo_v`.
+                let (lo_v, hi_v) = (lo_v.min(plo), hi_v.max(phi));
                 let (lo, hi) = (y + VALUE_LANE - 14.0, y + 12.0);
                 let scale =
                     move |v: i128| lo - (lo - hi) * ((v - lo_v) as f64 / (hi_v - lo_v) as f64);
@@ -619,7 +620,7 @@ fn render(d: &Diagram) -> String {
         "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{:.1}\" y2=\"{y:.1}\" stroke=\"black\"/>",
         WIDTH - RIGHT
     );
-    let step = tick_step(t_end - t0, 8.0);
+    let step = tick_step(t_end, 8.0);
     // Ticks on whole multiples of the step in absolute time, at most a dozen.
     let step_ms = (step as u64).max(1);
     let first = (origin.div_ceil(step_ms).saturating_mul(step_ms) - origin) as f64;
