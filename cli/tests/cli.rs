@@ -349,6 +349,21 @@ fn check_exit_statuses_and_explanation() {
         assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
         assert!(stderr(&o).contains(message), "{}", stderr(&o));
     }
+    // A malformed word output names the word forms (S_ODT's BCD, from the second row of the
+    // SD run at the top of this file).
+    let o = plc(
+        &["check", "SD"],
+        "t_ms,S,TV,Q,BI,BCD\n0,1,W#16#0002,0,2,W#16#0002\n20,1,W#16#0002,1,0,W#16#00G0\n",
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
+    assert!(
+        stderr(&o).contains(
+            "line 3, column 6 (BCD): `W#16#00G0` is not a valid BCD output; \
+             it is W#16# and 1 to 4 hexadecimal digits, or 0..65535"
+        ),
+        "{}",
+        stderr(&o)
+    );
     // A missing output column.
     let q_only: String = good
         .lines()
