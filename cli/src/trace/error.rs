@@ -77,7 +77,11 @@ impl std::error::Error for TraceError {}
 /// A cell's text as a message shows it: invalid UTF-8 replaced by `\u{FFFD}`, control
 /// characters escaped, at most [`SHOWN_CHARS`] characters and then `…`.
 pub fn show(bytes: &[u8]) -> String {
-    // Never decode more than a small prefix: a 10 MB cell must not make a 10 MB message.
+    // Never decode more than a small prefix: a 10 MB cell must not make a 10 MB message. A
+    // character takes at most 4 bytes (and the lossy decoding turns a cut one into one
+    // replacement character), so a prefix of this length holds at least SHOWN_CHARS + 1
+    // characters whenever it is shorter than the cell: the loop below then always stops at the
+    // limit and adds the `…`.
     let prefix = &bytes[..bytes.len().min(SHOWN_CHARS * 4 + 4)];
     let text = String::from_utf8_lossy(prefix);
     let mut out = String::new();
@@ -91,9 +95,6 @@ pub fn show(bytes: &[u8]) -> String {
         } else {
             out.push(c);
         }
-    }
-    if prefix.len() < bytes.len() {
-        out.push('…');
     }
     out
 }
@@ -156,5 +157,14 @@ mod tests {
         assert_eq!(show(&[b'x'; SHOWN_CHARS]), "x".repeat(SHOWN_CHARS));
         assert_eq!(show(b"a\tb"), "a\\tb");
         assert_eq!(show(b"\xff"), "\u{FFFD}");
+        // Four-byte characters: 60 are shown whole, the 61st becomes the `…`.
+        let wide = "\u{1F600}".repeat(SHOWN_CHARS);
+        assert_eq!(show(wide.as_bytes()), wide);
+        let wider = "\u{1F600}".repeat(SHOWN_CHARS + 1);
+        assert_eq!(show(wider.as_bytes()), format!("{wide}…"));
+        // A cell cut inside a character: still 60 characters and the `…`.
+        let mut cut = "\u{1F600}".repeat(2 * SHOWN_CHARS).into_bytes();
+        cut.truncate(SHOWN_CHARS * 4 + 2);
+        assert_eq!(show(&cut), format!("{wide}…"));
     }
 }

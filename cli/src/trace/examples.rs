@@ -109,4 +109,25 @@ mod tests {
         assert!(parse("x", "# cargo run --release -- run TON x.csv\n").is_err());
         assert!(parse("x", "t_ms,IN\n").is_err());
     }
+
+    /// The options of an example's command: `--type` chooses the integer type, any other
+    /// `--NAME VALUE` is the preset, anything else is an error.
+    #[test]
+    fn command_options() {
+        let e = parse(
+            "x",
+            "# cargo run --release -- run CTU --type usint --pv 3 examples/traces/x.csv\n",
+        )
+        .expect("a CTU command");
+        assert_eq!(
+            e.spec,
+            BlockSpec::parse("CTU", Some("usint")).expect("USINT")
+        );
+        assert_eq!(e.preset, Some(("pv", "3")));
+        assert!(parse(
+            "x",
+            "# cargo run --release -- run CTU pv 3 examples/traces/x.csv\n"
+        )
+        .is_err());
+    }
 }
