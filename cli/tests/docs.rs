@@ -7,9 +7,9 @@ mod common;
 
 use std::fs;
 
-use plc_timers::catalog::Block;
+use plc_timers::catalog::{Block, ValueKind};
 use plc_timers_cli::trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
-use plc_timers_cli::trace::{examples, vcd, BlockSpec};
+use plc_timers_cli::trace::{engine, examples, vcd, BlockSpec};
 
 fn draw(
     spec: BlockSpec,
@@ -417,4 +417,130 @@ fn vcd_parses_back() {
         "{}",
         &text[at..at + 40]
     );
+}
+
+/// CLI-VCD-01: every example's VCD, read back with the `vcd` crate, holds at the end of each
+/// timestamp exactly the values of the last row of that time in `run`'s output (an independent
+/// path: the CSV writer): every boolean input and every output, declared as a 1-bit wire
+/// (BOOL), a 16-bit reg (WORD) or a 64-bit integer (the rest), each change as wide as its
+/// declaration. TON's preset signal holds PT = 500.
+#[test]
+fn vcd_agrees_with_run() {
+    use ::vcd::{Command, IdCode, Value as Bit, VarType};
+    use std::collections::HashMap;
+    for e in examples::all().expect("examples") {
+        let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
+        // The run's rows by time: the last row of each time.
+        let mut csv = Vec::new();
+        engine::run(e.spec, &presets, e.text.as_bytes(), &mut csv).expect("runs");
+        let csv = String::from_utf8(csv).expect("UTF-8");
+        let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+        let header: Vec<String> = lines
+            .next()
+            .expect("a header")
+            .split(',')
+            .map(str::to_ascii_uppercase)
+            .collect();
+        let t_col = header.iter().position(|h| h == "T_MS");
+        let mut rows: Vec<(u64, Vec<String>)> = Vec::new();
+        for (i, line) in lines.enumerate() {
+            let cells: Vec<String> = line.split(',').map(str::to_string).collect();
+            let t = t_col.map_or(i as u64, |c| cells[c].parse().expect("t_ms"));
+            match rows.last_mut() {
+                Some(last) if last.0 == t => last.1 = cells,
+                _ => rows.push((t, cells)),
+            }
+        }
+        // The VCD's declarations and its values at the end of each timestamp.
+        let mut out = Vec::new();
+        vcd::export(e.spec, &presets, e.text.as_bytes(), &mut out).expect("exports");
+        let mut declared: HashMap<IdCode, (VarType, u32, String)> = HashMap::new();
+        let mut values: HashMap<IdCode, i128> = HashMap::new();
+        let mut snapshots: Vec<(u64, HashMap<IdCode, i128>)> = Vec::new();
+        for command in ::vcd::Parser::new(&out[..]) {
+            match command.expect("a valid command") {
+                Command::VarDef(ty, size, id, name, _) => {
+                    declared.insert(id, (ty, size, name));
+                }
+                Command::Timestamp(t) => snapshots.push((t, values.clone())),
+                Command::ChangeScalar(id, b) => {
+                    assert_eq!(
+                        declared[&id].1, 1,
+                        "{}: a scalar change of a wide signal",
+                        e.stem
+                    );
+                    values.insert(id, i128::from(b == Bit::V1));
+                }
+                Command::ChangeVector(id, v) => {
+                    let (_, size, name) = &declared[&id];
+                    assert_eq!(v.len(), *size as usize, "{}: {name}'s change width", e.stem);
+                    let mut x: i128 = 0;
+                    for b in &v {
+                        x = x << 1 | i128::from(b == Bit::V1);
+                    }
+                    if *size == vcd::INT_BITS && x >> (size - 1) & 1 == 1 {
+                        x -= 1 << size; // two's complement
+                    }
+                    values.insert(id, x);
+                }
+                _ => {}
+            }
+        }
+        snapshots.push((u64::MAX, values));
+        // Snapshot k holds the values before timestamp k: those of timestamp k - 1.
+        let at: Vec<(u64, &HashMap<IdCode, i128>)> =
+            snapshots.windows(2).map(|w| (w[0].0, &w[1].1)).collect();
+        assert_eq!(
+            at.iter().map(|a| a.0).collect::<Vec<_>>(),
+            rows.iter().map(|r| r.0).collect::<Vec<_>>(),
+            "{}: one timestamp per time of the trace",
+            e.stem
+        );
+        let block = e.spec.block;
+        let mut checked = 0;
+        for ((t, vals), (_, cells)) in at.iter().zip(&rows) {
+            for (id, (ty, size, name)) in &declared {
+                let port_kind = block
+                    .outputs()
+                    .iter()
+                    .find(|p| p.name == name.as_str())
+                    .map(|p| p.kind);
+                let is_input = block.inputs().iter().any(|p| p.name == name.as_str());
+                let expected_decl = match port_kind {
+                    Some(ValueKind::Bool) => (VarType::Wire, 1),
+                    Some(ValueKind::Word) => (VarType::Reg, 16),
+                    Some(_) => (VarType::Integer, vcd::INT_BITS),
+                    None if is_input && block.preset().map(|p| p.name) != Some(name.as_str()) => {
+                        (VarType::Wire, 1)
+                    }
+                    None => (VarType::Integer, vcd::INT_BITS),
+                };
+                assert_eq!((*ty, *size), expected_decl, "{}: {name}", e.stem);
+                let Some(col) = header.iter().position(|h| *h == name.to_ascii_uppercase()) else {
+                    if block.preset().map(|p| p.name) == Some(name.as_str()) && block == Block::Ton
+                    {
+                        assert_eq!(vals.get(id), Some(&500), "TON: PT at {t}");
+                    }
+                    continue;
+                };
+                let cell = cells[col].as_str();
+                let want: i128 = match port_kind {
+                    Some(ValueKind::Word) => {
+                        i128::from_str_radix(cell.trim_start_matches("W#16#"), 16).expect("a word")
+                    }
+                    Some(ValueKind::Bool) | None => {
+                        i128::from(matches!(cell.to_ascii_lowercase().as_str(), "1" | "true"))
+                    }
+                    Some(_) => cell.parse().expect("an integer"),
+                };
+                assert_eq!(vals.get(id), Some(&want), "{}: {name} at {t} ms", e.stem);
+                checked += 1;
+            }
+        }
+        assert!(
+            checked >= 3 * rows.len(),
+            "{}: {checked} values checked",
+            e.stem
+        );
+    }
 }
