@@ -4,11 +4,16 @@
 //! names is the expected one.
 
 use plc_timers::catalog::{Block, ValueKind};
-use plc_timers_cli::trace::{check, run, BlockSpec, IntType};
+use plc_timers_cli::trace::{check, run, BlockSpec, IntType, Why};
 
 /// The rules `check` gives when output `output` of the data row at `t` (the `row`-th data row,
 /// 1-based) is changed in the reference's own trace.
 fn rules(spec: BlockSpec, trace: &str, row: usize, output: &str) -> Vec<&'static str> {
+    explanation(spec, trace, row, output).rules
+}
+
+/// The whole explanation (rules and what happened) of that difference.
+fn explanation(spec: BlockSpec, trace: &str, row: usize, output: &str) -> Why {
     let mut out = Vec::new();
     run(spec, &[], trace.as_bytes(), &mut out).expect("the trace runs");
     let text = String::from_utf8(out).expect("UTF-8");
@@ -38,7 +43,7 @@ fn rules(spec: BlockSpec, trace: &str, row: usize, output: &str) -> Vec<&'static
     let report = check(spec, &[], None, changed.as_bytes()).expect("well-formed");
     let d = report.difference.expect("a difference");
     assert_eq!(d.line, row as u64 + 1, "{changed}");
-    d.why.rules
+    d.why
 }
 
 fn first(spec: BlockSpec, trace: &str, row: usize, output: &str) -> &'static str {
@@ -205,6 +210,15 @@ fn iec_counter_rules() {
         ["CNT-Q-01", "CNT-EDGE-01"],
         "CTD's Q is QD"
     );
+    let why = explanation(ctd, d, 2, "Q");
+    assert!(why.what.starts_with("QD = CV <= 0 with CV = 0"), "{why:?}");
+    let why = explanation(ctud, t, 2, "QU");
+    assert!(
+        why.what.starts_with("QU = CV >= PV with CV = 1, PV = 3"),
+        "{why:?}"
+    );
+    let why = explanation(ctud, t, 2, "QD");
+    assert!(why.what.starts_with("QD = CV <= 0 with CV = 1"), "{why:?}");
 }
 
 #[test]
