@@ -606,6 +606,9 @@ mod tests {
             (b"a,b\n1,\"2\"x\n", 2, 2),
             (b"a,b\r\n\r\n1,\"2\n\n", 3, 2),
             (b"a\n\"\"\"\n", 2, 1),
+            // A CR after a closing quote that does not end the line.
+            (b"a\n\"x\"\ry\n", 2, 1),
+            (b"a\n\"x\"\r", 2, 1),
         ] {
             for chunk in [1, 5, 1 << 20] {
                 let e = records(input, chunk).expect_err("bad quotes");
@@ -619,6 +622,30 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A record with a quoted cell followed by unquoted ones is one line; the rows after it are
+    /// read one at a time, not gathered into one record: the bytes after a quoted record may
+    /// be many times the record limit.
+    #[test]
+    fn quoted_records_end_at_their_line() {
+        assert_eq!(lines(b"a,b\n\"x\",1\n2,3\n"), [1, 2, 3]);
+        assert_eq!(lines(b"a,b\r\n\"x\",1\r\n2,3\r\n"), [1, 2, 3]);
+        let limit = 64 << 10;
+        let mut input = b"a,b\n\"x\",1\n".to_vec();
+        for i in 0..(4 * limit / 8) {
+            input.extend_from_slice(format!("{:07},\n", i % 10_000_000).as_bytes());
+        }
+        let mut r = Reader::with_limit(&input[..], limit);
+        let mut n = 0;
+        while r
+            .next_record()
+            .expect("records far below the limit")
+            .is_some()
+        {
+            n += 1;
+        }
+        assert_eq!(n, 2 + 4 * limit / 8);
     }
 
     /// The recent records stay readable across refills of the buffer.
