@@ -252,6 +252,15 @@ fn s5_counter_rules() {
         "Q = CV != 0"
     );
     assert_eq!(rules(c, t, 4, "CV_BCD"), ["SC-RANGE-01", "SC-SET-01"]);
+    // FR rises with S: the set is FR's doing only when S was already held (its memory cleared);
+    // a CU that falls meanwhile has nothing to do with it.
+    let fr = "CU,S,FR,PV\n1,0,0,C#5\n0,1,1,C#7\n0,1,0,C#7\n0,1,1,C#8\n";
+    assert_eq!(rules(c, fr, 2, "CV"), ["SC-SET-01"], "S rises with FR");
+    assert_eq!(
+        rules(c, fr, 4, "CV"),
+        ["SC-SET-01", "SC-FR-01"],
+        "FR rises, S held: set again"
+    );
     let both = "CU,CD,PV\n1,1,C#5\n";
     assert_eq!(first(c, both, 1, "CV"), "SC-SIMUL-01");
     assert_eq!(rules(c, "CU,PV\n0,C#5\n", 1, "Q"), ["SC-Q-01"]);
