@@ -175,6 +175,12 @@ fn s5_timer_rules() {
         "S falls: the off-delay starts"
     );
     assert_eq!(first(sf, f, 3, "BI"), "SF-Q-01", "S rises: stopped, Q = 1");
+    let held = "t_ms,S,TV\n0,1,S5T#50MS\n10,1,S5T#50MS\n";
+    assert_eq!(
+        first(sf, held, 2, "Q"),
+        "S5TMR-EDGE-01",
+        "S held at 1: no edge, nothing starts or stops"
+    );
     let sp = block(Block::SPulse);
     let p = "t_ms,S,TV\n0,1,S5T#50MS\n20,0,S5T#50MS\n";
     assert_eq!(first(sp, p, 2, "Q"), "S5TMR-STOP-01");

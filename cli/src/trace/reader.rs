@@ -648,6 +648,39 @@ mod tests {
         assert_eq!(n, 2 + 4 * limit / 8);
     }
 
+    /// A read interrupted by a signal is retried; any other read error is reported, with the
+    /// line the reader had reached.
+    #[test]
+    fn read_errors() {
+        struct Flaky(u8);
+        impl Read for Flaky {
+            fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+                self.0 += 1;
+                match self.0 {
+                    1 => Err(std::io::ErrorKind::Interrupted.into()),
+                    2 => {
+                        out[..4].copy_from_slice(b"a\n1\n");
+                        Ok(4)
+                    }
+                    _ => Err(std::io::Error::other("disk gone")),
+                }
+            }
+        }
+        let mut r = Reader::new(Flaky(0));
+        assert_eq!(
+            r.next_record()
+                .expect("after the interruption")
+                .map(|h| h.line()),
+            Some(1)
+        );
+        assert_eq!(r.next_record().expect("the row").map(|h| h.line()), Some(2));
+        let e = r.next_record().expect_err("the error");
+        assert!(
+            e.message.contains("cannot read the trace: disk gone"),
+            "{e}"
+        );
+    }
+
     /// The recent records stay readable across refills of the buffer.
     #[test]
     fn recent_records_survive_refills() {
