@@ -216,6 +216,8 @@ fn iec_counter_rules() {
         ["CNT-Q-01", "CNT-EDGE-01"],
         "CTD's Q is QD"
     );
+    let why = explanation(ctud, t, 1, "CV");
+    assert!(why.what.starts_with("CU rises: CV 0 -> 1"), "{why:?}");
     let why = explanation(ctd, d, 2, "Q");
     assert!(why.what.starts_with("QD = CV <= 0 with CV = 0"), "{why:?}");
     let why = explanation(ctud, t, 2, "QU");

@@ -1085,6 +1085,17 @@ mod tests {
     use super::*;
     use plc_timers::catalog::Port;
 
+    /// `with` chooses the implementation and keeps the block and type.
+    #[test]
+    fn with_sets_the_implementation() {
+        let spec = BlockSpec::parse("CTU", Some("usint")).expect("CTU of USINT");
+        for i in [Implementation::Optimized, Implementation::Reference] {
+            let chosen = spec.with(i);
+            assert_eq!(chosen.implementation, i);
+            assert_eq!((chosen.block, chosen.int_type), (spec.block, spec.int_type));
+        }
+    }
+
     /// Records what a visit saw.
     struct Probe;
     impl Visit for Probe {
