@@ -264,6 +264,12 @@ fn s5_counter_rules() {
     // a CU that falls meanwhile has nothing to do with it.
     let fr = "CU,S,FR,PV\n1,0,0,C#5\n0,1,1,C#7\n0,1,0,C#7\n0,1,1,C#8\n";
     assert_eq!(rules(c, fr, 2, "CV"), ["SC-SET-01"], "S rises with FR");
+    let fr_cd = "CD,S,FR,PV\n1,0,0,C#5\n0,1,1,C#7\n";
+    assert_eq!(
+        rules(c, fr_cd, 2, "CV"),
+        ["SC-SET-01"],
+        "S rises with FR, CD falls"
+    );
     assert_eq!(
         rules(c, fr, 4, "CV"),
         ["SC-SET-01", "SC-FR-01"],
