@@ -631,6 +631,8 @@ mod tests {
     fn quoted_records_end_at_their_line() {
         assert_eq!(lines(b"a,b\n\"x\",1\n2,3\n"), [1, 2, 3]);
         assert_eq!(lines(b"a,b\r\n\"x\",1\r\n2,3\r\n"), [1, 2, 3]);
+        // The same as the last line, with no line end.
+        assert_eq!(lines(b"a,b\n\"x\",1"), [1, 2]);
         let limit = 64 << 10;
         let mut input = b"a,b\n\"x\",1\n".to_vec();
         for i in 0..(4 * limit / 8) {
