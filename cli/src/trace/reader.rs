@@ -583,7 +583,7 @@ mod tests {
         assert_eq!(lines(b"\xef\xbb\xbf#c\n\na\n\t\n1\n"), [3, 5]);
         assert_eq!(lines(b"a\n\"x\ny\"\n2\n"), [1, 2, 4]);
         assert_eq!(lines(b"a\r\n\"x\r\ny\"\r\n2\r\n"), [1, 2, 4]);
-        // Comment and blank lines with a quote in them take the quoted path: one line each.
+        // Comment lines with a quote in them take the quoted path: one line each.
         assert_eq!(lines(b"a\n# say \"hi\"\n1\n#\"\n2\n"), [1, 3, 5]);
         assert_eq!(lines(b"a\r\n# \"\r\n1\r\n"), [1, 3]);
     }
