@@ -91,7 +91,7 @@ fn bad_input_names_line_and_column_exit_2() {
             "line 1: TON needs its preset: a `PT` column or the option --pt",
         ),
         (&["run", "TON", "--pv", "5"], "t_ms,IN\n", "option --pv does not apply to TON; its preset PT is given with --pt"),
-        (&["run", "TON", "--pt", "5", "--type", "INT"], "t_ms,IN\n", "--type applies to the IEC counters"),
+        (&["run", "TON", "--pt", "5", "--type", "INT"], "t_ms,IN\n", "--type applies to the IEC counters (CTU CTD CTUD) only, not to TON"),
         (&["run", "CTU", "--pv", "5", "--type", "INT8"], "CU\n", "unknown integer type"),
         (&["run", "CTU", "--pv", "40000"], "CU\n1\n", "option --pv: `40000`: not a valid INT preset; PV is a whole number from -32768 to 32767"),
         (&["run", "S_CU", "--pv", "C#1000"], "CU\n1\n", "option --pv"),

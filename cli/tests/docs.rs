@@ -119,6 +119,32 @@ fn ton_q_rises_at_expiry_and_et_ramps() {
     );
 }
 
+/// CLI-DIAG-01: an S5 timer's BI runs down one unit per tick of its own time base. S5T#20S is
+/// 200 units of the 100 ms base (2 000 units of 10 ms would pass 999), so S_PULSE started at 0
+/// ramps BI from 200 down to 0 at t = 200 x 100 ms = 20 000 ms, then stays flat until the next
+/// row at 30 000 ms.
+#[test]
+fn s5_bi_ramps_on_its_time_base() {
+    let (svg, _) = draw(
+        BlockSpec::new(Block::SPulse),
+        &[("tv", "S5T#20S")],
+        b"t_ms,S\n0,1\n30000,1\n",
+        Window::default(),
+    );
+    let t_end = 30000.0 + 30000.0 * 0.08;
+    let x = |t: f64| (x_of(t, 0.0, t_end) * 10.0).round() / 10.0;
+    let bi = polyline(&svg, "ramp", "BI");
+    let i = bi
+        .iter()
+        .position(|p| (p.0 - x(20000.0)).abs() < 0.06)
+        .unwrap_or_else(|| panic!("BI reaches 0 at 20 000 ms: {bi:?}"));
+    assert!(bi[i].1 > bi[0].1, "down from 200 at 0 to 0 there: {bi:?}");
+    assert!(
+        bi[..i].iter().all(|p| p.0 < x(20000.0)),
+        "no earlier end of the ramp: {bi:?}"
+    );
+}
+
 /// CLI-DIAG-01: the value axis spans every value drawn, negative ones too, with ticks on whole
 /// multiples of a 1-2-5 step giving at most about four intervals. CTD loaded with PV = 2 and
 /// counted down five times runs CV from 2 to -3: a span of 5, so the step is 2 (5 / 4 = 1.25

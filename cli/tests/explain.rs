@@ -146,6 +146,13 @@ fn s5_timer_rules() {
         "S rises: start"
     );
     assert_eq!(first(sd, t, 3, "BI"), "S5TMR-TICK-01", "ticks count down");
+    // The tick explains BI and BCD only: Q of a running SD that has not run out is its kind's
+    // rule; a stopped timer's BI did not tick; a call with no tick boundary since the last one
+    // (0 -> 2 ms on the 10 ms base) counted nothing.
+    assert_eq!(first(sd, t, 3, "Q"), "SD-Q-01", "Q while running");
+    assert_eq!(first(sd, t, 1, "BI"), "SD-Q-01", "BI while stopped");
+    let no_tick = "t_ms,S,TV\n0,1,S5T#50MS\n2,1,S5T#50MS\n";
+    assert_eq!(first(sd, no_tick, 2, "BI"), "SD-Q-01", "no tick in 0..2 ms");
     assert_eq!(
         rules(sd, t, 3, "BCD"),
         ["S5TMR-TICK-01", "S5TMR-RANGE-01"],

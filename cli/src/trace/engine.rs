@@ -359,7 +359,8 @@ impl<F: Family> Engine<F> {
                         ),
                     )));
                 };
-                if self.rows > 0 && t < self.last {
+                // `last` starts at 0, so the first row cannot go backwards.
+                if t < self.last {
                     return Err(Box::new(self.cell_error(
                         rec,
                         i,
