@@ -70,7 +70,11 @@ fn iec_timer_rules() {
         "IEC-EXPIRY-01",
         "Q waits for ET >= PT"
     );
-    assert_eq!(first(ton, t, 4, "ET"), "TON-IN-01", "IN falls: reset");
+    assert_eq!(
+        rules(ton, t, 4, "ET"),
+        ["TON-IN-01"],
+        "IN falls while running: ET returns to 0 (Q stays 0), no edge rule"
+    );
     assert_eq!(
         first(ton, t, 6, "Q"),
         "IEC-PT-LATCH-01",
@@ -87,6 +91,10 @@ fn iec_timer_rules() {
     // A gap of 2^32 + 5 ms while running: elapsed is taken modulo 2^32.
     let wrap = "t_ms,IN,PT\n10,1,T#10S\n4294967311,1,T#10S\n";
     assert_eq!(first(ton, wrap, 2, "ET"), "IEC-WRAP-01");
+    // A gap of 2^31 + 10 ms: elapsed passes PT in that call, so the timer stops running; the
+    // wrap rule still decides it.
+    let wrap_out = "t_ms,IN,PT\n10,1,T#10S\n2147483668,1,T#10S\n";
+    assert_eq!(first(ton, wrap_out, 2, "Q"), "IEC-WRAP-01");
     // PT = 0: the starting call itself expires.
     let zero = "t_ms,IN,PT\n0,0,0\n5,1,0\n";
     assert_eq!(first(ton, zero, 2, "Q"), "IEC-PT0-01");
@@ -120,6 +128,12 @@ fn iec_timer_rules() {
     );
     assert_eq!(first(tof, f, 3, "ET"), "TOF-IN-01", "IN back to 1 resets");
     assert_eq!(first(tof, f, 5, "Q"), "IEC-EXPIRY-01", "Q falls at ET = PT");
+    let held = "t_ms,IN,PT\n0,1,T#100MS\n10,1,T#100MS\n";
+    assert_eq!(
+        first(tof, held, 2, "Q"),
+        "TOF-IN-01",
+        "IN held at 1 starts nothing"
+    );
     let tonr = block(Block::Tonr);
     let r = "t_ms,IN,R,PT\n0,1,0,T#100MS\n40,0,0,T#100MS\n60,1,0,T#100MS\n80,1,1,T#100MS\n";
     assert_eq!(
@@ -133,6 +147,12 @@ fn iec_timer_rules() {
         "resumes from the accumulated ET"
     );
     assert_eq!(first(tonr, r, 4, "Q"), "TONR-R-01");
+    let held = "t_ms,IN,R,PT\n0,1,0,T#100MS\n40,1,0,T#100MS\n";
+    assert_eq!(
+        first(tonr, held, 2, "ET"),
+        "IEC-START-01",
+        "IN held: running, no new start"
+    );
 }
 
 #[test]
@@ -242,6 +262,14 @@ fn s5_counter_rules() {
     let t = "CU,CD,S,R,FR,PV\n1,0,0,0,0,C#5\n1,0,0,0,1,C#5\n1,1,0,0,0,C#5\n0,0,1,0,0,C#999\n\
              1,0,0,0,0,C#999\n0,0,0,1,0,C#999\n0,1,0,0,0,C#999\n1,0,1,0,0,C#7\n";
     assert_eq!(first(c, t, 1, "CV"), "SC-EDGE-01", "CU rises: counts");
+    let why = explanation(c, t, 1, "CV");
+    assert!(why.what.starts_with("CU rises: CV 0 -> 1"), "{why:?}");
+    let held = "CU,PV\n1,C#5\n1,C#5\n";
+    assert_eq!(
+        rules(c, held, 2, "CV"),
+        ["SC-EDGE-01"],
+        "CU held, FR never rose"
+    );
     assert_eq!(
         first(c, t, 2, "CV"),
         "SC-FR-01",
