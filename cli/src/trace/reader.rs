@@ -23,7 +23,7 @@ const INITIAL_BUFFER: usize = 64 << 10;
 /// How many recent records the reader keeps ([`Reader::recent`]).
 pub const HISTORY: usize = 4;
 
-/// The most bytes the kept records may take.
+/// The most bytes the records kept before the one being read may take at a refill.
 pub const KEEP_LIMIT: usize = 16 << 10;
 
 /// One field of the record: a range of the input buffer, or (quoted fields) of the unquoted copy.
@@ -156,9 +156,10 @@ impl<R: Read> Reader<R> {
     /// bytes to the front, or growing the buffer up to [`MAX_RECORD`]).
     fn fill(&mut self) -> Result<(), TraceError> {
         // Keep the recent records in the buffer when they are small; drop them rather than
-        // grow the buffer for them.
-        let oldest = (self.kept > 0)
-            .then(|| self.history[(self.next_kept + HISTORY - self.kept) % HISTORY].0);
+        // grow the buffer for them. A refill happens while a record is read, and that record
+        // takes the oldest of HISTORY kept slots: only the others are worth keeping.
+        self.kept = self.kept.min(HISTORY - 1);
+        let oldest = (self.kept > 0).then(|| self.history[self.kept_slot(0)].0);
         let keep = match oldest {
             Some(start) if self.pos - start <= KEEP_LIMIT => start,
             _ => {
@@ -167,7 +168,8 @@ impl<R: Read> Reader<R> {
             }
         };
         self.compact(keep);
-        if self.end == self.buf.len() && self.kept > 0 {
+        // Full even so: drop the kept records too (with none kept, `keep` was `pos` already).
+        if self.end == self.buf.len() {
             self.kept = 0;
             self.compact(self.pos);
         }
@@ -216,14 +218,19 @@ impl<R: Read> Reader<R> {
     }
 
     /// The last records read (up to [`HISTORY`], the most recent last), line and text as
-    /// written, as long as they were at most [`KEEP_LIMIT`] bytes together: what `check`
-    /// shows before a difference, kept without copying each row.
+    /// written: what `check` shows before a difference, kept in the buffer without copying
+    /// each row. When the buffer is refilled, the records before the one being read are
+    /// dropped if together they take more than [`KEEP_LIMIT`] bytes.
     pub fn recent(&self) -> impl Iterator<Item = (u64, &[u8])> {
         (0..self.kept).map(move |k| {
-            let (start, end, line) =
-                self.history[(self.next_kept + HISTORY - self.kept + k) % HISTORY];
+            let (start, end, line) = self.history[self.kept_slot(k)];
             (line, &self.buf[start..end])
         })
+    }
+
+    /// The slot of the `k`-th (0: the oldest) of the kept records in the ring.
+    fn kept_slot(&self, k: usize) -> usize {
+        (self.next_kept + HISTORY - self.kept + k) % HISTORY
     }
 
     /// The next record, or `None` at the end of the input.
@@ -683,22 +690,90 @@ mod tests {
         );
     }
 
+    /// A source that hands out at most `.1` bytes per read: every record then takes refills.
+    struct Slow<'a>(&'a [u8], usize);
+
+    impl Read for Slow<'_> {
+        fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+            let n = self.0.len().min(self.1).min(out.len());
+            out[..n].copy_from_slice(&self.0[..n]);
+            self.0 = &self.0[n..];
+            Ok(n)
+        }
+    }
+
+    /// `n` records of `len` bytes each (`i,xxx...`), each with its line end.
+    fn records_of(len: usize, n: usize) -> Vec<u8> {
+        (0..n)
+            .flat_map(|i| {
+                let mut r = format!("{i:04},").into_bytes();
+                r.resize(len, b'x');
+                r.push(b'\n');
+                r
+            })
+            .collect()
+    }
+
+    /// After each record: how many records `recent()` shows, and the bytes (line ends
+    /// included) of those before the current one.
+    fn recent_counts(input: &[u8]) -> Vec<(usize, usize)> {
+        let mut r = Reader::new(Slow(input, 997));
+        let mut counts = Vec::new();
+        while r.next_record().expect("valid").is_some() {
+            let recent: Vec<usize> = r.recent().map(|(_, t)| t.len() + 1).collect();
+            let before: usize = recent[..recent.len() - 1].iter().sum();
+            counts.push((recent.len(), before));
+        }
+        counts
+    }
+
+    /// Records of 5 000 bytes: the three before the current one take 15 003 bytes, within
+    /// KEEP_LIMIT (16 KiB), so `recent()` always has the last HISTORY (4) of them.
+    #[test]
+    fn recent_records_kept_while_within_keep_limit() {
+        let counts = recent_counts(&records_of(5000, 12));
+        let shown: Vec<usize> = counts.iter().map(|c| c.0).collect();
+        assert_eq!(shown, [1, 2, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4]);
+    }
+
+    /// Records of 6 000 bytes: three before the current one would take 18 003 bytes, more
+    /// than KEEP_LIMIT; those are dropped at a refill rather than kept, so the records shown
+    /// before the current one never take more than KEEP_LIMIT bytes (two of them do fit).
+    #[test]
+    fn recent_records_dropped_beyond_keep_limit() {
+        let counts = recent_counts(&records_of(6000, 12));
+        assert!(counts.iter().all(|c| c.1 <= KEEP_LIMIT), "{counts:?}");
+        assert!(counts.iter().any(|c| c.0 == 3), "{counts:?}");
+    }
+
+    /// Blank and comment lines before the first record do not count against the record
+    /// limit: 10 KiB of comments, then a header of 60 KiB under a 64 KiB limit.
+    #[test]
+    fn leading_comments_do_not_count_against_the_limit() {
+        let mut input = Vec::new();
+        for _ in 0..40 {
+            input.push(b'#');
+            input.extend(std::iter::repeat_n(b'c', 254));
+            input.push(b'\n');
+        }
+        input.extend(std::iter::repeat_n(b'h', 60 << 10));
+        input.push(b'\n');
+        let mut r = Reader::with_limit(Slow(&input, 4096), 64 << 10);
+        let header = r
+            .next_record()
+            .expect("within the limit")
+            .expect("a record");
+        assert_eq!((header.line(), header.raw().len()), (41, 60 << 10));
+        assert!(!header.is_empty());
+    }
+
     /// The recent records stay readable across refills of the buffer.
     #[test]
     fn recent_records_survive_refills() {
         let input: Vec<u8> = (0..50)
             .flat_map(|i| format!("{i},x{i}\n").into_bytes())
             .collect();
-        struct Slow<'a>(&'a [u8]);
-        impl Read for Slow<'_> {
-            fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
-                let n = self.0.len().min(3).min(out.len());
-                out[..n].copy_from_slice(&self.0[..n]);
-                self.0 = &self.0[n..];
-                Ok(n)
-            }
-        }
-        let mut r = Reader::new(Slow(&input));
+        let mut r = Reader::new(Slow(&input, 3));
         let mut n = 0u64;
         while r.next_record().expect("valid").is_some() {
             n += 1;
