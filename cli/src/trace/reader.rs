@@ -284,12 +284,8 @@ impl<R: Read> Reader<R> {
                     return Ok(Some(self.emit(raw_end, next, lines)));
                 }
                 Err(Incomplete::Bad(e)) => return Err(Box::new(e)),
-                Err(Incomplete::NeedMore) if self.eof => {
-                    return Err(Box::new(TraceError::new(
-                        Location::Line(self.line),
-                        "the trace ends inside this record",
-                    )))
-                }
+                // `parse_quoted` asks for more only before the end of the input (there, a
+                // quote left open is an error of its own), so each refill reads or ends.
                 Err(Incomplete::NeedMore) => self.fill()?,
             }
         }
@@ -486,18 +482,10 @@ impl<R: Read> Reader<R> {
                     }
                     _ => {
                         // A line end or the end of the input.
-                        let text_end = if end > field_start && buf[end - 1] == b'\r' {
-                            end - 1
-                        } else {
-                            end
-                        };
-                        push_copy(
-                            &mut self.unquoted,
-                            &mut self.fields,
-                            &buf[field_start..text_end],
-                        );
+                        let text = strip_cr(&buf[field_start..end]);
+                        push_copy(&mut self.unquoted, &mut self.fields, text);
                         let next = (end + 1).min(buf.len());
-                        return Ok((text_end, next, lines + 1));
+                        return Ok((field_start + text.len(), next, lines + 1));
                     }
                 }
             }
@@ -616,6 +604,10 @@ mod tests {
             // A CR after a closing quote that does not end the line.
             (b"a\n\"x\"\ry\n", 2, 1),
             (b"a\n\"x\"\r", 2, 1),
+            // After a quoted cell spanning two lines: the quote left open, the stray quote, on
+            // the record's second line.
+            (b"a,b\n\"x\ny\",\"open\n", 3, 2),
+            (b"a,b\n\"x\ny\",a\"b\n", 3, 2),
         ] {
             for chunk in [1, 5, 1 << 20] {
                 let e = records(input, chunk).expect_err("bad quotes");
@@ -638,6 +630,9 @@ mod tests {
     fn quoted_records_end_at_their_line() {
         assert_eq!(lines(b"a,b\n\"x\",1\n2,3\n"), [1, 2, 3]);
         assert_eq!(lines(b"a,b\r\n\"x\",1\r\n2,3\r\n"), [1, 2, 3]);
+        // Blanks after the closing quote of a cell spanning lines, the input split right after
+        // them (chunk 1): the record goes on.
+        assert_eq!(lines(b"a,b\n\"x\ny\" ,1\n2,3\n"), [1, 2, 4]);
         // The same as the last line, with no line end.
         assert_eq!(lines(b"a,b\n\"x\",1"), [1, 2]);
         let limit = 64 << 10;
@@ -655,6 +650,14 @@ mod tests {
             n += 1;
         }
         assert_eq!(n, 2 + 4 * limit / 8);
+    }
+
+    /// A quote opened and never closed: the input ends inside the record; the error names the
+    /// cell the quote opens (not a wait for more input that never comes).
+    #[test]
+    fn unclosed_quote_at_the_end_of_the_input() {
+        let e = records(b"a,b\n1,\"open\n2,3\n", 1 << 20).expect_err("open quote");
+        assert_eq!(e.to_string().lines().next(), Some("line 2, column 2 (field 2): the quote opened here is never closed; a quoted cell ends with `\"` (write a quote inside it as `\"\"`)"), "{e}");
     }
 
     /// A read interrupted by a signal is retried; any other read error is reported, with the
