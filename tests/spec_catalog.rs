@@ -80,7 +80,7 @@ fn definition(text: &str, function: &str) -> Option<usize> {
 }
 
 /// Whether `file::function` names a function defined in that file; with `test`, also that the
-/// file is under tests/, proofs/ or src/ and the function carries `#[test]` (among the attribute
+/// file is under tests/, proofs/, src/, cli/tests/ or cli/src/ and the function carries `#[test]` (among the attribute
 /// and doc-comment lines right above it, which also covers functions inside `proptest!`) or is
 /// defined in a `quickcheck!` block.
 fn exists(reference: &str, test: bool) -> Result<(), String> {
@@ -88,12 +88,12 @@ fn exists(reference: &str, test: bool) -> Result<(), String> {
         .split_once("::")
         .ok_or(format!("`{reference}` is not file::function"))?;
     if test
-        && !["tests/", "proofs/", "src/", "cli/tests/"]
+        && !["tests/", "proofs/", "src/", "cli/tests/", "cli/src/"]
             .iter()
             .any(|d| file.starts_with(d))
     {
         return Err(format!(
-            "`{reference}`: tests live in tests/, proofs/, src/ or cli/tests/"
+            "`{reference}`: tests live in tests/, proofs/, src/, cli/tests/ or cli/src/"
         ));
     }
     let text = fs::read_to_string(Path::new(file)).map_err(|e| format!("{file}: {e}"))?;
@@ -398,7 +398,7 @@ fn checker_rejects_bad_entries() {
     for expected in [
         "duplicate ID",
         "`fn exists` in tests/spec_catalog.rs is not a #[test]",
-        "tests live in tests/, proofs/, src/ or cli/tests/",
+        "tests live in tests/, proofs/, src/, cli/tests/ or cli/src/",
     ] {
         assert!(
             errors.iter().any(|e| e.contains(expected)),
