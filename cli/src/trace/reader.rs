@@ -532,18 +532,21 @@ fn strip_cr(b: &[u8]) -> &[u8] {
 mod tests {
     use super::*;
 
+    /// A source that hands out at most `.1` bytes per read, so that records cross refills.
+    struct Chunks<'a>(&'a [u8], usize);
+
+    impl Read for Chunks<'_> {
+        fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+            let n = self.0.len().min(self.1).min(out.len());
+            out[..n].copy_from_slice(&self.0[..n]);
+            self.0 = &self.0[n..];
+            Ok(n)
+        }
+    }
+
     /// Every record as (line, fields, raw), read through a reader that gets `chunk` bytes at a
     /// time, so that records cross buffer refills.
     fn records(input: &[u8], chunk: usize) -> Result<Vec<(u64, Vec<String>, String)>, TraceError> {
-        struct Chunks<'a>(&'a [u8], usize);
-        impl Read for Chunks<'_> {
-            fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
-                let n = self.0.len().min(self.1).min(out.len());
-                out[..n].copy_from_slice(&self.0[..n]);
-                self.0 = &self.0[n..];
-                Ok(n)
-            }
-        }
         let mut r = Reader::new(Chunks(input, chunk));
         let mut out = Vec::new();
         while let Some(rec) = r.next_record()? {
@@ -693,18 +696,6 @@ mod tests {
         );
     }
 
-    /// A source that hands out at most `.1` bytes per read: every record then takes refills.
-    struct Slow<'a>(&'a [u8], usize);
-
-    impl Read for Slow<'_> {
-        fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
-            let n = self.0.len().min(self.1).min(out.len());
-            out[..n].copy_from_slice(&self.0[..n]);
-            self.0 = &self.0[n..];
-            Ok(n)
-        }
-    }
-
     /// `n` records of `len` bytes each (`i,xxx...`), each with its line end.
     fn records_of(len: usize, n: usize) -> Vec<u8> {
         (0..n)
@@ -720,7 +711,7 @@ mod tests {
     /// After each record: how many records `recent()` shows, and the bytes (line ends
     /// included) of those before the current one.
     fn recent_counts(input: &[u8]) -> Vec<(usize, usize)> {
-        let mut r = Reader::new(Slow(input, 997));
+        let mut r = Reader::new(Chunks(input, 997));
         let mut counts = Vec::new();
         while r.next_record().expect("valid").is_some() {
             let recent: Vec<usize> = r.recent().map(|(_, t)| t.len() + 1).collect();
@@ -761,7 +752,7 @@ mod tests {
         }
         input.extend(std::iter::repeat_n(b'h', 60 << 10));
         input.push(b'\n');
-        let mut r = Reader::with_limit(Slow(&input, 4096), 64 << 10);
+        let mut r = Reader::with_limit(Chunks(&input, 4096), 64 << 10);
         let header = r
             .next_record()
             .expect("within the limit")
@@ -776,7 +767,7 @@ mod tests {
         let input: Vec<u8> = (0..50)
             .flat_map(|i| format!("{i},x{i}\n").into_bytes())
             .collect();
-        let mut r = Reader::new(Slow(&input, 3));
+        let mut r = Reader::new(Chunks(&input, 3));
         let mut n = 0u64;
         while r.next_record().expect("valid").is_some() {
             n += 1;
