@@ -156,8 +156,8 @@ impl<R: Read> Reader<R> {
     /// bytes to the front, or growing the buffer up to [`MAX_RECORD`]).
     fn fill(&mut self) -> Result<(), TraceError> {
         // Keep the recent records in the buffer when they are small; drop them rather than
-        // grow the buffer for them. A refill happens while a record is read, and that record
-        // takes the oldest of HISTORY kept slots: only the others are worth keeping.
+        // grow the buffer for them. The next record read takes the oldest of HISTORY kept
+        // slots, so only the others are worth keeping.
         self.kept = self.kept.min(HISTORY - 1);
         let oldest = (self.kept > 0).then(|| self.history[self.kept_slot(0)].0);
         let keep = match oldest {
