@@ -40,7 +40,8 @@ pub fn reference_step(
 ) -> (S5State, S5Output) {
     let mut r = S5TimerRef::from_state(state, CpuTime::ZERO).expect("a valid state");
     r.tick(ticks);
-    let out = r.execute(kind, input);
+    // Called at its previous call's time: no further tick, the box executes once.
+    let out = r.call(kind, CpuTime::ZERO, input);
     (r.state(), out)
 }
 

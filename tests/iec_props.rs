@@ -74,7 +74,7 @@ fn start() -> impl Strategy<Value = u32> {
 /// Runs `events` on both implementations, with `kind_of(i)` the instruction of the i-th call,
 /// and asserts IEC-EQUIV-02 and IEC-ET-RANGE-01 after every event.
 fn check_trace(start: u32, pts: [i32; 3], events: &[Event], kind_of: impl Fn(usize) -> IecKind) {
-    let mut r = IecTimerRef::<u32>::new();
+    let mut r = IecTimerRef::new();
     let mut opt = IecTimer::new();
     let mut now = CpuTime::from_millis(u64::from(start));
     let mut input = false;
@@ -176,7 +176,7 @@ fn ton_across_the_wrap_with_reads() {
     let pt = Time::from_millis(300);
     let start = CpuTime::from_millis(u64::from(u32::MAX - 99)); // 100 ms before the wrap
     let at = |ms: u64| CpuTime::from_millis((1 << 32) + ms);
-    let mut r = IecTimerRef::<u32>::new();
+    let mut r = IecTimerRef::new();
     let mut opt = IecTimer::new();
     for t in [&mut r as &mut dyn IecTimerOps<u32>, &mut opt] {
         assert!(!t.call(IecKind::Ton, start, IecInput::new(true, pt)).q);

@@ -9,7 +9,7 @@ use plc_timers::time::{CpuTime, Time};
 
 struct Both {
     kind: IecKind,
-    reference: IecTimerRef<u32>,
+    reference: IecTimerRef,
     structure: IecTimer,
 }
 

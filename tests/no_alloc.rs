@@ -42,7 +42,7 @@ struct Blocks {
     s5_refs: [S5TimerRef; 5],
     s5: [S5Timer; 5],
     area: TimerMemory<8>,
-    iec_refs: [IecTimerRef<u32>; 4],
+    iec_refs: [IecTimerRef; 4],
     iec: [IecTimer; 4],
     ton_bank: TonBank<3>,
     ctr_refs: [CounterRef<i64>; 3],
@@ -102,8 +102,8 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     b.ton_bank
         .scan(now, &[s, !s, i.is_multiple_of(3)], &[pt; 3]);
     sum += b.ton_bank.outputs().map(|o| u64::from(o.et)).sum::<u64>();
-    if let Some(state) = b.ton_bank.get(1) {
-        b.ton_bank.set_state(2, state);
+    if let Ok(state) = b.ton_bank.get(1) {
+        assert_eq!(b.ton_bank.set_state(2, state), Ok(true));
     }
 
     let ci = CounterInput {
@@ -140,8 +140,8 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
         .outputs(7)
         .map(|o| o.cv.unsigned_abs() as u64)
         .sum::<u64>();
-    if let Some(state) = b.ctr_bank.get(0) {
-        b.ctr_bank.set_state(1, state);
+    if let Ok(state) = b.ctr_bank.get(0) {
+        assert_eq!(b.ctr_bank.set_state(1, state), Ok(()));
     }
 
     let sci = S5CounterInput {

@@ -591,7 +591,7 @@ fn bulk_ton(c: &mut Criterion) {
     let ws = vec![
         per_instance!(
             "reference (IecTimerRef array)",
-            IecTimerRef::<u32>::new(),
+            IecTimerRef::new(),
             pt,
             |t, input, pt, now| {
                 t.call(

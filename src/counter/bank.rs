@@ -3,6 +3,7 @@
 //! `CTUD` once per scan (CNT-EQUIV-01, checked in `proofs/counter.rs`).
 
 use super::{outputs, CounterInt, CounterOutput, CounterState};
+use crate::operand::{self, NoSuchOperand, Operand};
 
 const CU_PREV: u8 = 0b01;
 const CD_PREV: u8 = 0b10;
@@ -14,7 +15,7 @@ const CD_PREV: u8 = 0b10;
 /// let (on, off) = ([true; 2], [false; 2]);
 /// let mut bank = CounterBank::<u8, 2>::new();
 /// bank.scan(&BankInputs { cu: &on, cd: &off, r: &off, ld: &off }, 1);
-/// assert_eq!(bank.output(1, 1).map(|o| o.qu), Some(true));
+/// assert_eq!(bank.output(1, 1).map(|o| o.qu), Ok(true));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BankInputs<'a, const N: usize> {
@@ -74,29 +75,27 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
         }
     }
 
-    /// The state of counter `i`, if it exists.
-    pub fn get(&self, i: usize) -> Option<CounterState<T>> {
-        let e = *self.edges.get(i)?;
-        Some(CounterState {
+    /// The state of counter `i`.
+    pub fn get(&self, i: usize) -> Result<CounterState<T>, NoSuchOperand> {
+        let e = operand::word(&self.edges, Operand::Counter, i)?;
+        Ok(CounterState {
             cv: self.cv[i],
             cu_prev: e & CU_PREV != 0,
             cd_prev: e & CD_PREV != 0,
         })
     }
 
-    /// Puts counter `i` in `state`; `false` when `i` is out of range.
-    pub fn set_state(&mut self, i: usize, state: CounterState<T>) -> bool {
-        if i >= N {
-            return false;
-        }
+    /// Puts counter `i` in `state` (every counter state is valid).
+    pub fn set_state(&mut self, i: usize, state: CounterState<T>) -> Result<(), NoSuchOperand> {
+        *operand::word_mut(&mut self.edges, Operand::Counter, i)? =
+            (u8::from(state.cu_prev) * CU_PREV) | (u8::from(state.cd_prev) * CD_PREV);
         self.cv[i] = state.cv;
-        self.edges[i] = (u8::from(state.cu_prev) * CU_PREV) | (u8::from(state.cd_prev) * CD_PREV);
-        true
+        Ok(())
     }
 
-    /// The outputs of counter `i` for preset `pv`, if it exists.
-    pub fn output(&self, i: usize, pv: T) -> Option<CounterOutput<T>> {
-        self.cv.get(i).map(|&cv| outputs(cv, pv))
+    /// The outputs of counter `i` for preset `pv`.
+    pub fn output(&self, i: usize, pv: T) -> Result<CounterOutput<T>, NoSuchOperand> {
+        operand::word(&self.cv, Operand::Counter, i).map(|cv| outputs(cv, pv))
     }
 
     /// The outputs of every counter for preset `pv`, counter 0 first.

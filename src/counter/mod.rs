@@ -168,8 +168,9 @@ impl CounterKind {
 ///
 /// ```
 /// use plc_timers::counter::CounterInput;
-/// let input = CounterInput { cu: true, pv: 10i32, ..CounterInput::default() };
-/// assert!(input.cu && !input.r);
+/// let input = CounterInput::new(true, false, 10i32).with_ld(true);
+/// assert!(input.cu && input.ld && !input.r);
+/// assert_eq!(CounterInput::<i16>::default(), CounterInput::new(false, false, 0));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
@@ -188,6 +189,29 @@ pub struct CounterInput<T> {
 }
 
 impl<T> CounterInput<T> {
+    /// `CU`, `CD` and `PV`, with `R` = `LD` = 0.
+    pub const fn new(cu: bool, cd: bool, pv: T) -> CounterInput<T> {
+        CounterInput {
+            cu,
+            cd,
+            r: false,
+            ld: false,
+            pv,
+        }
+    }
+
+    /// These inputs with `R` = `r`.
+    #[must_use]
+    pub fn with_r(self, r: bool) -> CounterInput<T> {
+        CounterInput { r, ..self }
+    }
+
+    /// These inputs with `LD` = `ld`.
+    #[must_use]
+    pub fn with_ld(self, ld: bool) -> CounterInput<T> {
+        CounterInput { ld, ..self }
+    }
+
     /// The boolean inputs alone.
     pub const fn signals(&self) -> CounterInput<()> {
         CounterInput {

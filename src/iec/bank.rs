@@ -4,6 +4,7 @@
 //! (IEC-BANK-01, checked in `proofs/iec.rs`).
 
 use super::{IecKind, IecOutput, IecState};
+use crate::operand::{NoSuchOperand, Operand};
 use crate::time::{CpuTime, Time};
 
 /// Flag bits of [`TonBank::flags`].
@@ -38,7 +39,7 @@ const LANES: usize = 16;
 /// }
 /// let q: Vec<bool> = delays.outputs().map(|o| o.q).collect();
 /// assert_eq!(q, [true, false, true]);
-/// assert_eq!(delays.output(0).map(|o| o.et), Some(2_000));
+/// assert_eq!(delays.output(0).map(|o| o.et), Ok(2_000));
 /// ```
 ///
 /// # Representation
@@ -115,10 +116,15 @@ impl<const N: usize> TonBank<N> {
         }
     }
 
-    /// The outputs `Q` and `ET` of timer `i`, if it exists.
-    pub fn output(&self, i: usize) -> Option<IecOutput<u32>> {
-        Some(IecOutput {
-            q: *self.flags.get(i)? & Q != 0,
+    /// Timer `i`'s flags, or the error naming the bank's range.
+    fn flags_of(&self, i: usize) -> Result<u8, NoSuchOperand> {
+        crate::operand::word(&self.flags, Operand::Timer, i)
+    }
+
+    /// The outputs `Q` and `ET` of timer `i`.
+    pub fn output(&self, i: usize) -> Result<IecOutput<u32>, NoSuchOperand> {
+        Ok(IecOutput {
+            q: self.flags_of(i)? & Q != 0,
             et: self.et_of(i),
         })
     }
@@ -131,10 +137,10 @@ impl<const N: usize> TonBank<N> {
         })
     }
 
-    /// The state of timer `i` as the reference names it, if it exists.
-    pub fn get(&self, i: usize) -> Option<IecState<u32>> {
-        let f = *self.flags.get(i)?;
-        Some(IecState {
+    /// The state of timer `i` as the reference names it.
+    pub fn get(&self, i: usize) -> Result<IecState<u32>, NoSuchOperand> {
+        let f = self.flags_of(i)?;
+        Ok(IecState {
             kind: self.scanned.then_some(IecKind::Ton),
             input: f & IN != 0,
             running: f & RUNNING != 0,
@@ -145,11 +151,13 @@ impl<const N: usize> TonBank<N> {
         })
     }
 
-    /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `false`, and no change,
-    /// when `i` is out of range or the state is not valid ([`IecState::is_valid`]).
-    pub fn set_state(&mut self, i: usize, state: IecState<u32>) -> bool {
-        if i >= N || !state.is_valid() {
-            return false;
+    /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `Ok(false)`, and no
+    /// change, when the state is not valid ([`IecState::is_valid`]).
+    #[must_use = "`Ok(false)` says the state was not valid and the timer did not change"]
+    pub fn set_state(&mut self, i: usize, state: IecState<u32>) -> Result<bool, NoSuchOperand> {
+        self.flags_of(i)?;
+        if !state.is_valid() {
+            return Ok(false);
         }
         self.start[i] = state.start;
         self.pt[i] = state.pt ^ BIAS;
@@ -158,7 +166,7 @@ impl<const N: usize> TonBank<N> {
             | (u8::from(state.q) * Q)
             | (u8::from(state.running) * (RUNNING | EXPLICIT));
         self.explicit |= state.running;
-        true
+        Ok(true)
     }
 
     /// Brings every [`EXPLICIT`] timer to the representation the scan expects: ET slot = PT,
@@ -367,7 +375,7 @@ mod tests {
     fn bank_equals_reference<const N: usize>(seed: u64) {
         let mut rng = Rng(seed);
         let mut bank = TonBank::<N>::new();
-        let mut refs = [IecTimerRef::<u32>::new(); N];
+        let mut refs = [IecTimerRef::new(); N];
         let mut now = (1u64 << 32) - 300;
         let mut inputs = [false; N];
         for _ in 0..400 {
@@ -378,9 +386,9 @@ mod tests {
                 if rng.below(50) == 0 {
                     let s = any_state(&mut rng);
                     *r = IecTimerRef::from_state(s).expect("a valid state");
-                    assert!(bank.set_state(i, s));
-                    let kind = bank.get(i).and_then(|b| b.kind);
-                    assert_eq!(bank.get(i), Some(IecState { kind, ..s }));
+                    assert_eq!(bank.set_state(i, s), Ok(true));
+                    let kind = bank.get(i).ok().and_then(|b| b.kind);
+                    assert_eq!(bank.get(i), Ok(IecState { kind, ..s }));
                 }
             }
             let pt: [Time; N] =
@@ -390,15 +398,15 @@ mod tests {
             bank.scan(at, &inputs, &pt);
             for (i, r) in refs.iter_mut().enumerate() {
                 let out = r.call(IecKind::Ton, at, IecInput::new(inputs[i], pt[i]));
-                assert_eq!(bank.output(i), Some(out), "timer {i} at {now}");
-                assert_eq!(bank.get(i), Some(r.state()), "timer {i} at {now}");
+                assert_eq!(bank.output(i), Ok(out), "timer {i} at {now}");
+                assert_eq!(bank.get(i), Ok(r.state()), "timer {i} at {now}");
             }
             let outs: Vec<_> = bank.outputs().collect();
             assert_eq!(outs.len(), N);
             assert!(outs
                 .iter()
                 .enumerate()
-                .all(|(i, o)| Some(*o) == bank.output(i)));
+                .all(|(i, o)| Ok(*o) == bank.output(i)));
         }
     }
 
@@ -421,9 +429,9 @@ mod tests {
         scanned.scan(CpuTime::from_millis(40), &[true], &pt);
         let mut set = TonBank::<1>::new();
         set.scan(CpuTime::from_millis(0), &[false], &pt);
-        assert!(set.set_state(0, scanned.get(0).expect("timer 0")));
+        assert_eq!(set.set_state(0, scanned.get(0).expect("timer 0")), Ok(true));
         assert_eq!(set.get(0), scanned.get(0));
         assert_eq!(set, scanned);
-        assert_eq!(scanned.output(0).map(|o| o.et), Some(30));
+        assert_eq!(scanned.output(0).map(|o| o.et), Ok(30));
     }
 }

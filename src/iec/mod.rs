@@ -21,7 +21,7 @@
 //!
 //! let pt = plc_timers::time!("T#500MS");
 //! let at = CpuTime::from_millis;
-//! let mut reference = IecTimerRef::<u32>::new();
+//! let mut reference = IecTimerRef::new();
 //! let mut optimized = IecTimer::new();
 //! for t in [&mut reference as &mut dyn IecTimerOps<u32>, &mut optimized] {
 //!     assert!(!t.call(IecKind::Ton, at(1_000), IecInput::new(true, pt)).q); // START = 1000
@@ -95,6 +95,19 @@ pub struct IecInput {
     pub pt: Time,
     /// `R` (TONR only; ignored by TP, TON and TOF).
     pub reset: bool,
+}
+
+/// Every input 0, `PT` = `T#0MS`: the inputs of a box that nothing drives.
+///
+/// ```
+/// use plc_timers::iec::IecInput;
+/// use plc_timers::time::Time;
+/// assert_eq!(IecInput::default(), IecInput::new(false, Time::ZERO));
+/// ```
+impl Default for IecInput {
+    fn default() -> IecInput {
+        IecInput::new(false, Time::ZERO)
+    }
 }
 
 impl IecInput {

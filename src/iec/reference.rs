@@ -15,14 +15,14 @@ use crate::time::{CpuTime, Time};
 /// use plc_timers::time::CpuTime;
 ///
 /// let pt = plc_timers::time!("T#100MS");
-/// let mut tp = IecTimerRef::<u32>::new();
+/// let mut tp = IecTimerRef::new();
 /// let at = CpuTime::from_millis;
 /// assert!(tp.call(IecKind::Tp, at(0), IecInput::new(true, pt)).q); // the pulse starts
 /// assert!(tp.call(IecKind::Tp, at(50), IecInput::new(false, pt)).q); // IN has no effect
 /// assert!(!tp.call(IecKind::Tp, at(100), IecInput::new(false, pt)).q); // ET = PT: over
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct IecTimerRef<C> {
+pub struct IecTimerRef<C = u32> {
     /// The structure's members, named as in the manual.
     state: IecState<C>,
 }
@@ -42,27 +42,31 @@ fn q_after_expiry(kind: IecKind) -> bool {
     matches!(kind, IecKind::Ton | IecKind::Tonr)
 }
 
-impl<C: ClockWord> IecTimerRef<C> {
-    /// The initial structure: everything 0 (a new or non-retentive instance DB).
+impl IecTimerRef {
+    /// The initial structure on the S7-1200's 32-bit millisecond clock: everything 0 (a new
+    /// or non-retentive instance DB). On another clock word `C`,
+    /// `IecTimerRef::<C>::default()` is the same structure.
     ///
     /// ```
     /// use plc_timers::iec::{IecTimerOps, IecTimerRef};
-    /// assert_eq!(IecTimerRef::<u32>::new().state(), Default::default());
+    /// assert_eq!(IecTimerRef::new().state(), Default::default());
     /// ```
-    pub const fn new() -> IecTimerRef<C> {
+    pub const fn new() -> IecTimerRef {
         IecTimerRef {
             state: IecState {
                 kind: None,
                 input: false,
                 running: false,
-                start: C::ZERO,
-                pt: C::ZERO,
-                et: C::ZERO,
+                start: 0,
+                pt: 0,
+                et: 0,
                 q: false,
             },
         }
     }
+}
 
+impl<C: ClockWord> IecTimerRef<C> {
     /// The timer in `state`, or `None` when the state is not valid ([`IecState::is_valid`]).
     ///
     /// ```
@@ -239,7 +243,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
     /// IEC-RETAIN-01: timer data is lost on RUN-STOP-RUN unless the structure is retentive.
     fn run_stop_run(&mut self, retentive: bool) {
         if !retentive {
-            *self = IecTimerRef::new();
+            *self = IecTimerRef::default();
         }
     }
 

@@ -66,7 +66,7 @@ const fn kind_of(code: u8) -> IecKind {
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C)]
-pub struct IecTimerOf<C> {
+pub struct IecTimerOf<C = u32> {
     start: C,
     pt: C,
     et: C,

@@ -103,6 +103,7 @@ impl<const N: usize> TimerMemory<N> {
     }
 
     /// Puts timer `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
+    #[must_use = "`Ok(false)` says the state was not valid and the operand did not change"]
     pub fn set_state(&mut self, index: usize, state: S5State) -> Result<bool, NoSuchOperand> {
         let w = self.word(index)?;
         Ok(match TimerWord::from_state(state) {

@@ -132,6 +132,19 @@ pub struct S5Input {
     pub tv: S5Time,
 }
 
+/// Every input 0, `TV` = `S5T#0MS`: the inputs of a box that nothing drives.
+///
+/// ```
+/// use plc_timers::s5::S5Input;
+/// use plc_timers::time::S5Time;
+/// assert_eq!(S5Input::default(), S5Input::new(false, false, S5Time::ZERO));
+/// ```
+impl Default for S5Input {
+    fn default() -> S5Input {
+        S5Input::new(false, false, S5Time::ZERO)
+    }
+}
+
 impl S5Input {
     /// `S`, `R` and `TV`, with `FR` = 0.
     ///
@@ -147,6 +160,12 @@ impl S5Input {
             fr: false,
             tv,
         }
+    }
+
+    /// These inputs with `R` = `r`.
+    #[must_use]
+    pub const fn with_r(self, r: bool) -> S5Input {
+        S5Input { r, ..self }
     }
 
     /// These inputs with `FR` = `fr`.

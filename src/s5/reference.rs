@@ -229,7 +229,7 @@ impl S5TimerRef {
 
     /// One execution of the box `kind` with the OS ticks since the previous execution already
     /// applied ([`S5TimerRef::tick`]): the value-0 check, `FR`, the start logic, `R`.
-    pub fn execute(&mut self, kind: S5Kind, input: S5Input) -> S5Output {
+    fn execute(&mut self, kind: S5Kind, input: S5Input) -> S5Output {
         self.process_zero_value();
         self.enable(input.fr);
         self.start_logic(kind, &input);

@@ -359,9 +359,7 @@ pub fn dispatch<V: Visit>(spec: BlockSpec, v: V) -> V::Out {
     match (block.kind(), spec.implementation) {
         (Kind::S5Timer(k), Reference) => v.visit(S5Adapter::new(block, k, S5TimerRef::new())),
         (Kind::S5Timer(k), Optimized) => v.visit(S5Adapter::new(block, k, S5Timer::new())),
-        (Kind::IecTimer(k), Reference) => {
-            v.visit(IecAdapter::new(block, k, IecTimerRef::<u32>::new()))
-        }
+        (Kind::IecTimer(k), Reference) => v.visit(IecAdapter::new(block, k, IecTimerRef::new())),
         (Kind::IecTimer(k), Optimized) => v.visit(IecAdapter::new(block, k, IecTimer::new())),
         (Kind::IecCounter(k), imp) => spec.int_type.dispatch(block, k, imp, v),
         (Kind::S5Counter(k), Reference) => {

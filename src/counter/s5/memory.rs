@@ -67,6 +67,7 @@ impl<const N: usize> CounterMemory<N> {
     }
 
     /// Puts counter `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
+    #[must_use = "`Ok(false)` says the state was not valid and the operand did not change"]
     pub fn set_state(
         &mut self,
         index: usize,

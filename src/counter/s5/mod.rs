@@ -94,8 +94,9 @@ pub const CV_MAX: u16 = 999;
 ///
 /// ```
 /// use plc_timers::counter::s5::{CounterPreset, S5CounterInput};
-/// let set = S5CounterInput { s: true, pv: CounterPreset::new(20)?, ..Default::default() };
-/// assert!(set.s && !set.cu);
+/// let set = S5CounterInput::new(false, false, CounterPreset::new(20)?).with_s(true);
+/// assert!(set.s && !set.cu && !set.fr);
+/// assert_eq!(S5CounterInput::default(), S5CounterInput::new(false, false, CounterPreset::default()));
 /// # Ok::<(), plc_timers::counter::s5::CounterPresetError>(())
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -114,6 +115,38 @@ pub struct S5CounterInput {
     pub fr: bool,
     /// `PV`.
     pub pv: CounterPreset,
+}
+
+impl S5CounterInput {
+    /// `CU`, `CD` and `PV`, with `S` = `R` = `FR` = 0.
+    pub const fn new(cu: bool, cd: bool, pv: CounterPreset) -> S5CounterInput {
+        S5CounterInput {
+            cu,
+            cd,
+            s: false,
+            r: false,
+            fr: false,
+            pv,
+        }
+    }
+
+    /// These inputs with `S` = `s`.
+    #[must_use]
+    pub const fn with_s(self, s: bool) -> S5CounterInput {
+        S5CounterInput { s, ..self }
+    }
+
+    /// These inputs with `R` = `r`.
+    #[must_use]
+    pub const fn with_r(self, r: bool) -> S5CounterInput {
+        S5CounterInput { r, ..self }
+    }
+
+    /// These inputs with `FR` = `fr`.
+    #[must_use]
+    pub const fn with_fr(self, fr: bool) -> S5CounterInput {
+        S5CounterInput { fr, ..self }
+    }
 }
 
 /// The outputs of one S5 counter box call.

@@ -28,12 +28,12 @@ const fn bit(b: bool, mask: u16) -> u16 {
 /// bits 11-10 zero), which [`S5Counter::from_bits`] checks.
 ///
 /// ```
-/// use plc_timers::counter::s5::{CounterPreset, S5Counter, S5CounterInput, S5CounterKind};
+/// use plc_timers::counter::s5::{CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps};
 /// let pv = CounterPreset::new(999)?;
-/// let w = S5Counter::new().execute(S5CounterKind::SCud, S5CounterInput { s: true, pv, ..Default::default() });
-/// let both = S5CounterInput { cu: true, cd: true, pv, ..Default::default() };
+/// let mut w = S5Counter::new();
+/// w.call(S5CounterKind::SCud, S5CounterInput::new(false, false, pv).with_s(true));
 /// // CU and CD rising together at 999: the count up saturates, the count down takes one off.
-/// assert_eq!(w.execute(S5CounterKind::SCud, both).output().cv, 998);
+/// assert_eq!(w.call(S5CounterKind::SCud, S5CounterInput::new(true, true, pv)).cv, 998);
 /// # Ok::<(), plc_timers::counter::s5::CounterPresetError>(())
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -182,7 +182,7 @@ impl S5Counter {
     /// One box call `kind`: `FR`, `CU` (unless S_CD), `CD` (unless S_CU), `S`, `R`.
     #[inline]
     #[must_use]
-    pub const fn execute(self, kind: S5CounterKind, i: S5CounterInput) -> S5Counter {
+    pub(crate) const fn execute(self, kind: S5CounterKind, i: S5CounterInput) -> S5Counter {
         let mut w = self.enable(i.fr);
         if kind.counts_up() {
             w = w.count_up(i.cu);
@@ -205,7 +205,7 @@ impl S5Counter {
 }
 
 impl S5CounterOps for S5Counter {
-    /// One box call: [`S5Counter::execute`], then the outputs. Each operation of the box
+    /// One box call (`FR`, `CU`, `CD`, `S`, `R` on the word), then the outputs. Each operation of the box
     /// branches on its input and its edge memory, which for a counter called once per scan
     /// go the same way most scans (measured faster than computing every operation with
     /// masks, whose bit chains make each call wait for the previous one).
