@@ -3,15 +3,15 @@
 //! their block lists from it, so a block is named in one place.
 //!
 //! ```
-//! use plc_timers::catalog::{Block, Family, ValueKind};
+//! use plc_timers::catalog::{Block, Family, Port, ValueKind};
 //!
 //! let sd = Block::lookup("sd").expect("the STL alias of S_ODT");
 //! assert_eq!((sd, sd.family()), (Block::SOdt, Family::S5Timer));
-//! let names: Vec<&str> = sd.inputs().iter().map(|i| i.name).collect();
+//! let names: Vec<&str> = sd.inputs().iter().map(|i| i.name()).collect();
 //! assert_eq!(names, ["S", "R", "FR", "TV"]);
-//! assert_eq!(sd.outputs()[2].name, "BCD");
-//! assert_eq!(sd.outputs()[2].kind, ValueKind::Word);
-//! assert_eq!(sd.preset().map(|p| p.option), Some("tv"));
+//! assert_eq!(sd.outputs()[2], Port::Bcd);
+//! assert_eq!(sd.outputs()[2].kind(), ValueKind::Word);
+//! assert_eq!((sd.preset().port, sd.preset().option), (Port::Tv, "tv"));
 //! ```
 
 use crate::counter::s5::S5CounterKind;
@@ -49,7 +49,7 @@ impl Family {
 ///
 /// ```
 /// use plc_timers::catalog::{Block, PresetKind};
-/// assert_eq!(Block::SCu.preset().map(|p| p.kind), Some(PresetKind::S5Count));
+/// assert_eq!(Block::SCu.preset().kind, PresetKind::S5Count);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PresetKind {
@@ -67,103 +67,117 @@ pub enum PresetKind {
 ///
 /// ```
 /// use plc_timers::catalog::{Block, ValueKind};
-/// let kinds: Vec<ValueKind> = Block::Ton.outputs().iter().map(|o| o.kind).collect();
+/// let kinds: Vec<ValueKind> = Block::Ton.outputs().iter().map(|o| o.kind()).collect();
 /// assert_eq!(kinds, [ValueKind::Bool, ValueKind::Int]);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ValueKind {
     /// A boolean signal, written `0`/`1`.
     Bool,
-    /// A preset (TV, PT, PV).
-    Preset(PresetKind),
+    /// A preset (TV, PT, PV); what it is depends on the block ([`Block::preset`]).
+    Preset,
     /// An integer (BI, ET, CV), written in decimal.
     Int,
     /// A 16-bit word (BCD, CV_BCD), written `W#16#XXXX`.
     Word,
 }
 
-/// One input or output of a block.
-///
-/// ```
-/// use plc_timers::catalog::{Block, ValueKind};
-/// let r = Block::Tonr.inputs()[1];
-/// assert_eq!((r.name, r.kind), ("R", ValueKind::Bool));
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Port {
-    /// The name as the manual's box writes it (`S`, `TV`, `IN`, `PT`, `CU`, `Q`, `ET`, …).
-    pub name: &'static str,
-    /// Its kind.
-    pub kind: ValueKind,
+macro_rules! ports {
+    ($($port:ident = $name:literal, $kind:ident, $doc:literal;)*) => {
+        /// An input or output of a block, named as the manual's box writes it. Code addresses
+        /// a pin by this enum, so that a misspelt pin does not compile; only a reader of text
+        /// (a CSV header) looks a name up.
+        ///
+        /// ```
+        /// use plc_timers::catalog::{Block, Port, ValueKind};
+        /// assert_eq!(Block::Tonr.inputs(), [Port::In, Port::R, Port::Pt]);
+        /// assert_eq!((Port::CvBcd.name(), Port::CvBcd.kind()), ("CV_BCD", ValueKind::Word));
+        /// assert!(Block::Tonr.has_input(Port::R) && !Block::Ton.has_input(Port::R));
+        /// ```
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum Port {
+            $(
+                #[doc = $doc]
+                $port,
+            )*
+        }
+
+        impl Port {
+            /// Every port, the inputs first.
+            pub const ALL: [Port; 18] = [$(Port::$port),*];
+
+            /// The name as the manual's box writes it (`S`, `TV`, `IN`, `CV_BCD`, …).
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(Port::$port => $name,)*
+                }
+            }
+
+            /// The kind of value it carries.
+            pub const fn kind(self) -> ValueKind {
+                match self {
+                    $(Port::$port => ValueKind::$kind,)*
+                }
+            }
+        }
+    };
+}
+
+ports! {
+    S = "S", Bool, "`S`: start (S5 timers), set (S5 counters).";
+    R = "R", Bool, "`R`: reset.";
+    Fr = "FR", Bool, "`FR`: enable (STL `FR T n`, `FR C n`).";
+    In = "IN", Bool, "`IN`: the IEC timers' input.";
+    Cu = "CU", Bool, "`CU`: count up.";
+    Cd = "CD", Bool, "`CD`: count down.";
+    Ld = "LD", Bool, "`LD` (`LOAD`): load PV into CV.";
+    Tv = "TV", Preset, "`TV`: the S5 timers' time value (an S5TIME).";
+    Pt = "PT", Preset, "`PT`: the IEC timers' preset time (a TIME).";
+    Pv = "PV", Preset, "`PV`: the counters' preset value.";
+    Q = "Q", Bool, "`Q`: the status output.";
+    Qu = "QU", Bool, "`QU`: CTUD's up status (CV >= PV).";
+    Qd = "QD", Bool, "`QD`: CTUD's down status (CV <= 0).";
+    Bi = "BI", Int, "`BI` (`DUAL`): the S5 timers' remaining time value in binary.";
+    Bcd = "BCD", Word, "`BCD` (`DEZ`): the S5 timers' remaining time with its base, in BCD.";
+    Et = "ET", Int, "`ET`: the IEC timers' elapsed time (ms).";
+    Cv = "CV", Int, "`CV`: the count.";
+    CvBcd = "CV_BCD", Word, "`CV_BCD`: the S5 counters' count in BCD.";
 }
 
 /// A preset input and how the command line may give it for every row.
 ///
 /// ```
-/// use plc_timers::catalog::{Block, PresetKind};
-/// let pt = Block::Tp.preset().expect("every block has a preset");
-/// assert_eq!((pt.name, pt.option, pt.kind), ("PT", "pt", PresetKind::Time));
+/// use plc_timers::catalog::{Block, Port, PresetKind};
+/// let pt = Block::Tp.preset();
+/// assert_eq!((pt.port, pt.option, pt.kind), (Port::Pt, "pt", PresetKind::Time));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Preset {
-    /// The input's name (`TV`, `PT`, `PV`).
-    pub name: &'static str,
+    /// The input (`TV`, `PT`, `PV`).
+    pub port: Port,
     /// The command-line option without dashes (`tv`, `pt`, `pv`).
     pub option: &'static str,
     /// What it is.
     pub kind: PresetKind,
 }
 
-const fn b(name: &'static str) -> Port {
-    Port {
-        name,
-        kind: ValueKind::Bool,
-    }
-}
+use Port::{Bcd, Bi, Cd, Cu, Cv, CvBcd, Et, Fr, In, Ld, Pt, Pv, Qd, Qu, Tv, Q, R, S};
 
-const fn p(name: &'static str, kind: PresetKind) -> Port {
-    Port {
-        name,
-        kind: ValueKind::Preset(kind),
-    }
-}
+const S5_TIMER_IN: &[Port] = &[S, R, Fr, Tv];
+const IEC_TIMER_IN: &[Port] = &[In, Pt];
+const TONR_IN: &[Port] = &[In, R, Pt];
+const CTU_IN: &[Port] = &[Cu, R, Pv];
+const CTD_IN: &[Port] = &[Cd, Ld, Pv];
+const CTUD_IN: &[Port] = &[Cu, Cd, R, Ld, Pv];
+const S_CU_IN: &[Port] = &[Cu, S, R, Fr, Pv];
+const S_CD_IN: &[Port] = &[Cd, S, R, Fr, Pv];
+const S_CUD_IN: &[Port] = &[Cu, Cd, S, R, Fr, Pv];
 
-const fn o(name: &'static str, kind: ValueKind) -> Port {
-    Port { name, kind }
-}
-
-const TV: Port = p("TV", PresetKind::S5Time);
-const PT: Port = p("PT", PresetKind::Time);
-const PV_INT: Port = p("PV", PresetKind::Integer);
-const PV_S5: Port = p("PV", PresetKind::S5Count);
-
-const S5_TIMER_IN: &[Port] = &[b("S"), b("R"), b("FR"), TV];
-const IEC_TIMER_IN: &[Port] = &[b("IN"), PT];
-const TONR_IN: &[Port] = &[b("IN"), b("R"), PT];
-const CTU_IN: &[Port] = &[b("CU"), b("R"), PV_INT];
-const CTD_IN: &[Port] = &[b("CD"), b("LD"), PV_INT];
-const CTUD_IN: &[Port] = &[b("CU"), b("CD"), b("R"), b("LD"), PV_INT];
-const S_CU_IN: &[Port] = &[b("CU"), b("S"), b("R"), b("FR"), PV_S5];
-const S_CD_IN: &[Port] = &[b("CD"), b("S"), b("R"), b("FR"), PV_S5];
-const S_CUD_IN: &[Port] = &[b("CU"), b("CD"), b("S"), b("R"), b("FR"), PV_S5];
-
-const S5_TIMER_OUT: &[Port] = &[
-    o("Q", ValueKind::Bool),
-    o("BI", ValueKind::Int),
-    o("BCD", ValueKind::Word),
-];
-const IEC_TIMER_OUT: &[Port] = &[o("Q", ValueKind::Bool), o("ET", ValueKind::Int)];
-const CTU_CTD_OUT: &[Port] = &[o("Q", ValueKind::Bool), o("CV", ValueKind::Int)];
-const CTUD_OUT: &[Port] = &[
-    o("QU", ValueKind::Bool),
-    o("QD", ValueKind::Bool),
-    o("CV", ValueKind::Int),
-];
-const S5_COUNTER_OUT: &[Port] = &[
-    o("Q", ValueKind::Bool),
-    o("CV", ValueKind::Int),
-    o("CV_BCD", ValueKind::Word),
-];
+const S5_TIMER_OUT: &[Port] = &[Q, Bi, Bcd];
+const IEC_TIMER_OUT: &[Port] = &[Q, Et];
+const CTU_CTD_OUT: &[Port] = &[Q, Cv];
+const CTUD_OUT: &[Port] = &[Qu, Qd, Cv];
+const S5_COUNTER_OUT: &[Port] = &[Q, Cv, CvBcd];
 
 /// Every block of the crate.
 ///
@@ -323,31 +337,28 @@ impl Block {
         }
     }
 
-    /// The preset input and its command-line option. Every block has one.
-    pub const fn preset(self) -> Option<Preset> {
+    /// The preset input and its command-line option (every block has one).
+    pub const fn preset(self) -> Preset {
+        let (port, option, kind) = match self.family() {
+            Family::S5Timer => (Tv, "tv", PresetKind::S5Time),
+            Family::IecTimer => (Pt, "pt", PresetKind::Time),
+            Family::IecCounter => (Pv, "pv", PresetKind::Integer),
+            Family::S5Counter => (Pv, "pv", PresetKind::S5Count),
+        };
+        Preset { port, option, kind }
+    }
+
+    /// Whether `port` is one of the block's inputs.
+    pub const fn has_input(self, port: Port) -> bool {
         let inputs = self.inputs();
         let mut i = 0;
         while i < inputs.len() {
-            if let ValueKind::Preset(kind) = inputs[i].kind {
-                let option = match kind {
-                    PresetKind::S5Time => "tv",
-                    PresetKind::Time => "pt",
-                    PresetKind::Integer | PresetKind::S5Count => "pv",
-                };
-                return Some(Preset {
-                    name: inputs[i].name,
-                    option,
-                    kind,
-                });
+            if inputs[i] as u8 == port as u8 {
+                return true;
             }
             i += 1;
         }
-        None
-    }
-
-    /// The position of the input called `name` (exact, upper-case) in [`Block::inputs`].
-    pub fn input_index(self, name: &str) -> Option<usize> {
-        self.inputs().iter().position(|i| i.name == name)
+        false
     }
 
     /// Whether a trace of this block needs the CPU time (`t_ms`).

@@ -47,16 +47,16 @@
 //! use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
 //! let mut ctu = Counter::<i16>::new();
 //! for cu in [true, false, true] {
-//!     ctu.call(CounterKind::Ctu, CounterInput { cu, pv: 2, ..Default::default() });
+//!     ctu.call(CounterKind::Ctu, CounterInput::new(cu, false, 2));
 //! }
-//! assert!(ctu.call(CounterKind::Ctu, CounterInput { pv: 2, ..Default::default() }).qu);
+//! assert!(ctu.call(CounterKind::Ctu, CounterInput::new(false, false, 2)).qu);
 //!
 //! // S5 counters: an S_CD loaded with C#1 and counted down to 0.
 //! use plc_timers::counter::s5::{CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps};
 //! let mut scd = S5Counter::new();
 //! let pv = CounterPreset::new(1).expect("0..=999");
-//! scd.call(S5CounterKind::SCd, S5CounterInput { s: true, pv, ..Default::default() });
-//! assert!(!scd.call(S5CounterKind::SCd, S5CounterInput { cd: true, pv, ..Default::default() }).q);
+//! scd.call(S5CounterKind::SCd, S5CounterInput::new(false, false, pv).with_s(true));
+//! assert!(!scd.call(S5CounterKind::SCd, S5CounterInput::new(false, true, pv)).q);
 //! ```
 //!
 //! ## Time is an input
@@ -84,3 +84,8 @@ pub mod s5;
 pub mod time;
 
 pub use operand::{NoSuchOperand, Operand};
+
+// The README's Rust examples are doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

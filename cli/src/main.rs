@@ -7,13 +7,15 @@ use std::io::{self, BufWriter, Read, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use clap::error::ErrorKind;
 use clap::{Arg, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueEnum};
 use plc_timers::catalog::Block;
 use plc_timers::time::{S5Time, Time};
 use plc_timers_cli::trace::diagram::{self, Window};
 use plc_timers_cli::trace::family::block_names;
 use plc_timers_cli::trace::{
-    check, run, vcd, vectors, BlockSpec, Error, Implementation, IntType, Location, TraceError,
+    check, parse_block, run, vcd, vectors, BlockSpec, Error, Implementation, IntType, Location,
+    PresetValue, TraceError,
 };
 
 /// Exit status: the check found a difference.
@@ -100,55 +102,91 @@ fn block_help() -> String {
 
 #[derive(Args, Debug)]
 struct BlockArgs {
-    #[arg(help = block_help())]
-    block: String,
+    /// The preset option (`--tv`, `--pt`, `--pv`), read for the block. First: the derived
+    /// parser takes each field's values out of the matches in this order, and this one reads
+    /// the block's and `--type`'s.
+    #[command(flatten)]
+    preset: PresetArg,
+    #[arg(help = block_help(), value_parser = parse_block)]
+    block: Block,
     /// The trace (CSV); standard input when absent or `-`.
     file: Option<PathBuf>,
-    #[command(flatten)]
-    presets: Presets,
-    /// IEC counters: the integer type of CV and PV (default INT).
-    #[arg(long = "type", help = format!("IEC counters: the integer type of CV and PV: {} (default INT)", IntType::names()))]
-    int_type: Option<String>,
+    #[arg(long = "type", value_parser = IntType::parse,
+          help = format!("IEC counters: the integer type of CV and PV: {} (default INT)", IntType::names()))]
+    int_type: Option<IntType>,
     /// Drive the optimized implementation instead of the reference.
     #[arg(long)]
     optimized: bool,
 }
 
-/// The preset options, one per preset kind of the catalog (`--tv`, `--pt`, `--pv`).
+/// The preset given on the command line, read for the block: one option per preset kind of the
+/// catalog (`--tv`, `--pt`, `--pv`). The parser refuses an option the block does not take,
+/// naming the block's, and reads the value as the block's preset cell is read.
 #[derive(Debug, Default)]
-struct Presets(Vec<(&'static str, String)>);
+struct PresetArg(Option<PresetValue>);
 
 /// Each preset option of the catalog with its input's name and the blocks that take it.
 fn preset_options() -> Vec<(&'static str, &'static str, Vec<&'static str>)> {
     let mut options: Vec<(&'static str, &'static str, Vec<&'static str>)> = Vec::new();
     for block in Block::ALL {
-        let Some(p) = block.preset() else { continue };
+        let p = block.preset();
         match options.iter_mut().find(|o| o.0 == p.option) {
             Some(o) => o.2.push(block.name()),
-            None => options.push((p.option, p.name, vec![block.name()])),
+            None => options.push((p.option, p.port.name(), vec![block.name()])),
         }
     }
     options
 }
 
-impl FromArgMatches for Presets {
+/// The argument parser's error for `message`.
+fn refuse(kind: ErrorKind, message: String) -> clap::Error {
+    clap::Error::raw(kind, message)
+}
+
+impl FromArgMatches for PresetArg {
     fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
-        let mut v = Vec::new();
+        // The block and --type are read by their own value parsers; they share these matches.
+        let Some(&block) = m.get_one::<Block>("block") else {
+            return Ok(PresetArg(None));
+        };
+        let int_type = m.get_one::<IntType>("int_type").copied();
+        let spec = BlockSpec::typed(block, int_type)
+            .map_err(|e| refuse(ErrorKind::ArgumentConflict, e))?;
+        let preset = block.preset();
+        let mut value = None;
         for (option, ..) in preset_options() {
-            if let Some(value) = m.get_one::<String>(option) {
-                v.push((option, value.clone()));
+            let Some(text) = m.get_one::<String>(option) else {
+                continue;
+            };
+            if option != preset.option {
+                return Err(refuse(
+                    ErrorKind::ArgumentConflict,
+                    format!(
+                        "option --{option} does not apply to {block}; its preset {} is given \
+                         with --{}",
+                        preset.port.name(),
+                        preset.option
+                    ),
+                ));
             }
+            let parsed = PresetValue::parse(spec, text).map_err(|e| {
+                refuse(
+                    ErrorKind::ValueValidation,
+                    format!("option --{option}: `{}`: {e}", text.trim()),
+                )
+            })?;
+            value = Some(parsed);
         }
-        Ok(Presets(v))
+        Ok(PresetArg(value))
     }
 
     fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
-        *self = Presets::from_arg_matches(m)?;
+        *self = PresetArg::from_arg_matches(m)?;
         Ok(())
     }
 }
 
-impl Args for Presets {
+impl Args for PresetArg {
     fn augment_args(mut cmd: clap::Command) -> clap::Command {
         for (option, name, blocks) in preset_options() {
             cmd = cmd.arg(
@@ -166,26 +204,22 @@ impl Args for Presets {
     }
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
-        Presets::augment_args(cmd)
+        PresetArg::augment_args(cmd)
     }
 }
 
 impl BlockArgs {
-    fn spec(&self) -> Result<BlockSpec, TraceError> {
+    fn spec(&self) -> BlockSpec {
         let implementation = if self.optimized {
             Implementation::Optimized
         } else {
             Implementation::Reference
         };
-        Ok(BlockSpec::parse(&self.block, self.int_type.as_deref())?.with(implementation))
-    }
-
-    fn presets(&self) -> Vec<(&str, &str)> {
-        self.presets
-            .0
-            .iter()
-            .map(|(o, v)| (*o, v.as_str()))
-            .collect()
+        BlockSpec {
+            block: self.block,
+            int_type: self.int_type.unwrap_or(IntType::DEFAULT),
+            implementation,
+        }
     }
 
     fn input(&self) -> Result<Box<dyn Read>, TraceError> {
@@ -264,6 +298,94 @@ fn say(text: &str) -> Result<(), Error> {
     Ok(())
 }
 
+/// `s5time`: the value as a word of the automatic base, its milliseconds and its literal.
+fn s5time(value: &str) -> Result<ExitCode, Error> {
+    let t = value.parse::<S5Time>().map_err(bad_value)?.to_automatic();
+    say(&format!("W#16#{:04X} {} {t}\n", t.to_word(), t.as_millis()))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `time`: the value's milliseconds and its literal.
+fn time(value: &str) -> Result<ExitCode, Error> {
+    let t = value.parse::<Time>().map_err(bad_value)?;
+    say(&format!("{} {t}\n", t.as_millis()))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// A value the command refuses, as bad input.
+fn bad_value(e: impl std::fmt::Display) -> Error {
+    Error::Input(TraceError::new(Location::Command, e.to_string()))
+}
+
+/// `vectors`: every vector under `dir`.
+fn vectors_into(dir: &std::path::Path) -> Result<ExitCode, Error> {
+    let n = write_vectors(dir).map_err(|e| Error::Input(TraceError::new(Location::Command, e)))?;
+    say(&format!("wrote {n} vector files under {}\n", dir.display()))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `run`: the trace with the reference outputs, to standard output.
+fn run_trace(args: &BlockArgs) -> Result<ExitCode, Error> {
+    run(args.spec(), args.preset.0, args.input()?, raw_stdout())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `check`: the first difference from the reference, or how many rows agree.
+fn check_trace(args: &BlockArgs, outputs: Option<&[String]>) -> Result<ExitCode, Error> {
+    let names: Option<Vec<&str>> = outputs.map(|o| o.iter().map(String::as_str).collect());
+    let report = check(args.spec(), args.preset.0, names.as_deref(), args.input()?)?;
+    match report.difference {
+        None => {
+            say(&format!(
+                "OK: {} rows of {}: {} agree with the reference\n",
+                report.rows,
+                report.block,
+                report.compared.join(", ")
+            ))?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(d) => {
+            say(&d.to_string())?;
+            Ok(ExitCode::from(DIFFERENT))
+        }
+    }
+}
+
+/// `diagram`: the trace as an SVG timing diagram, or as VCD.
+fn draw(
+    args: &BlockArgs,
+    window: Window,
+    format: Format,
+    path: &PathBuf,
+) -> Result<ExitCode, Error> {
+    if let (Some(f), Some(t)) = (window.from, window.to) {
+        if f > t {
+            return Err(Error::Input(TraceError::new(
+                Location::Option("from"),
+                format!("--from {f} is after --to {t}"),
+            )));
+        }
+    }
+    let input = args.input()?;
+    let out = output(path)?;
+    match format {
+        Format::Svg => {
+            diagram::svg(args.spec(), args.preset.0, input, window, out)?;
+        }
+        Format::Vcd => {
+            vcd::export(args.spec(), args.preset.0, input, out)?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `vcd`: the trace with the reference outputs as VCD.
+fn export_vcd(args: &BlockArgs, path: &PathBuf) -> Result<ExitCode, Error> {
+    let input = args.input()?;
+    vcd::export(args.spec(), args.preset.0, input, output(path)?)?;
+    Ok(ExitCode::SUCCESS)
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -273,99 +395,28 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
-    let result: Result<ExitCode, Error> = match cli.command {
-        Command::S5time { value } => match value.parse::<S5Time>() {
-            // The word uses the automatic base.
-            Ok(t) => match S5Time::from_millis(u64::from(t.as_millis())) {
-                Ok(auto) => say(&format!(
-                    "W#16#{:04X} {} {}\n",
-                    auto.to_word(),
-                    auto.as_millis(),
-                    auto
-                ))
-                .map(|()| ExitCode::SUCCESS),
-                Err(e) => return fail(e),
-            },
-            Err(e) => return fail(e),
-        },
-        Command::Time { value } => match value.parse::<Time>() {
-            Ok(t) => say(&format!("{} {}\n", t.as_millis(), t)).map(|()| ExitCode::SUCCESS),
-            Err(e) => return fail(e),
-        },
-        Command::Vectors { dir } => match write_vectors(&dir) {
-            Ok(n) => say(&format!("wrote {n} vector files under {}\n", dir.display()))
-                .map(|()| ExitCode::SUCCESS),
-            Err(e) => return fail(e),
-        },
-        Command::Run(args) => (|| {
-            let spec = args.spec()?;
-            let input = args.input()?;
-            run(spec, &args.presets(), input, raw_stdout())?;
-            Ok(ExitCode::SUCCESS)
-        })(),
-        Command::Check {
-            block: args,
-            outputs,
-        } => (|| {
-            let spec = args.spec()?;
-            let input = args.input()?;
-            let names: Option<Vec<&str>> = outputs
-                .as_ref()
-                .map(|o| o.iter().map(String::as_str).collect());
-            let report = check(spec, &args.presets(), names.as_deref(), input)?;
-            match report.difference {
-                None => {
-                    say(&format!(
-                        "OK: {} rows of {}: {} agree with the reference\n",
-                        report.rows,
-                        report.block,
-                        report.compared.join(", ")
-                    ))?;
-                    Ok(ExitCode::SUCCESS)
-                }
-                Some(d) => {
-                    say(&d.to_string())?;
-                    Ok(ExitCode::from(DIFFERENT))
-                }
-            }
-        })(),
+    let result = match &cli.command {
+        Command::S5time { value } => s5time(value),
+        Command::Time { value } => time(value),
+        Command::Vectors { dir } => vectors_into(dir),
+        Command::Run(args) => run_trace(args),
+        Command::Check { block, outputs } => check_trace(block, outputs.as_deref()),
         Command::Diagram {
-            block: args,
+            block,
             from,
             to,
             format,
-            output: path,
-        } => (|| {
-            let spec = args.spec()?;
-            if let (Some(f), Some(t)) = (from, to) {
-                if f > t {
-                    return Err(Error::Input(TraceError::new(
-                        Location::Option("from"),
-                        format!("--from {f} is after --to {t}"),
-                    )));
-                }
-            }
-            let input = args.input()?;
-            let out = output(&path)?;
-            match format {
-                Format::Svg => {
-                    diagram::svg(spec, &args.presets(), input, Window { from, to }, out)?;
-                }
-                Format::Vcd => {
-                    vcd::export(spec, &args.presets(), input, out)?;
-                }
-            }
-            Ok(ExitCode::SUCCESS)
-        })(),
-        Command::Vcd {
-            block: args,
-            output: path,
-        } => (|| {
-            let spec = args.spec()?;
-            let input = args.input()?;
-            vcd::export(spec, &args.presets(), input, output(&path)?)?;
-            Ok(ExitCode::SUCCESS)
-        })(),
+            output,
+        } => draw(
+            block,
+            Window {
+                from: *from,
+                to: *to,
+            },
+            *format,
+            output,
+        ),
+        Command::Vcd { block, output } => export_vcd(block, output),
     };
     result.unwrap_or_else(finish)
 }

@@ -1,10 +1,10 @@
 //! The trace engine through the library: input-text variants, typed headers, strict CSV, and
 //! totality on arbitrary bytes (reference and optimized agree on every trace both accept).
 
-use plc_timers::catalog::Block;
+use plc_timers::catalog::{Block, PresetKind};
 use plc_timers_cli::trace::diagram::{self, Window};
 use plc_timers_cli::trace::{
-    check, run, vcd, BlockSpec, Error, Implementation, Location, TraceError,
+    check, run, vcd, BlockSpec, Error, Implementation, Location, PresetValue, TraceError,
 };
 use proptest::prelude::*;
 
@@ -12,9 +12,18 @@ fn ton() -> BlockSpec {
     BlockSpec::new(Block::Ton)
 }
 
-fn run_str(spec: BlockSpec, input: &[u8], presets: &[(&str, &str)]) -> Result<String, TraceError> {
+/// `text` as TON's PT, read as the command line's parser reads `--pt`.
+fn pt(text: &str) -> Option<PresetValue> {
+    Some(PresetValue::parse(ton(), text).expect("a valid PT"))
+}
+
+fn run_str(
+    spec: BlockSpec,
+    input: &[u8],
+    preset: Option<PresetValue>,
+) -> Result<String, TraceError> {
     let mut out = Vec::new();
-    match run(spec, presets, input, &mut out) {
+    match run(spec, preset, input, &mut out) {
         Ok(_) => Ok(String::from_utf8(out).expect("the runner writes UTF-8 for UTF-8 input")),
         Err(Error::Input(e)) => Err(e),
         Err(Error::Output(e)) => panic!("writing to a Vec fails: {e}"),
@@ -29,7 +38,7 @@ const PLAIN_OUT: &str = "t_ms,IN,Q,ET\n0,1,0,0\n3,1,0,3\n5,1,1,5\n9,1,1,5\n";
 #[test]
 fn cli_run_plain_trace() {
     assert_eq!(
-        run_str(ton(), PLAIN.as_bytes(), &[("pt", "5")]).unwrap(),
+        run_str(ton(), PLAIN.as_bytes(), pt("5")).unwrap(),
         PLAIN_OUT
     );
 }
@@ -43,7 +52,7 @@ fn cli_run_header_only_writes_header() {
         b"t_ms,IN",
         b"# c\r\nt_ms,IN\r\n",
     ] {
-        let out = run_str(ton(), input, &[("pt", "5")]).unwrap();
+        let out = run_str(ton(), input, pt("5")).unwrap();
         assert_eq!(out, "t_ms,IN,Q,ET\n");
     }
 }
@@ -69,7 +78,7 @@ fn cli_run_text_variants_are_equivalent() {
             .collect()
     };
     for v in variants {
-        let out = run_str(ton(), v, &[("pt", "5")])
+        let out = run_str(ton(), v, pt("5"))
             .unwrap_or_else(|e| panic!("{:?}: {e}", String::from_utf8_lossy(v)));
         assert_eq!(
             outputs(&out),
@@ -85,12 +94,12 @@ fn cli_run_text_variants_are_equivalent() {
 /// CLI-RUN-01: columns in any order; each record is echoed as written; a preset column.
 #[test]
 fn cli_run_column_order_and_preset_column() {
-    let out = run_str(ton(), b"IN,PT,t_ms\ntrue,5,0\n1,\"5\",7\n", &[]).unwrap();
+    let out = run_str(ton(), b"IN,PT,t_ms\ntrue,5,0\n1,\"5\",7\n", None).unwrap();
     assert_eq!(out, "IN,PT,t_ms,Q,ET\ntrue,5,0,0,0\n1,\"5\",7,1,5\n");
 }
 
 fn err(input: &[u8]) -> TraceError {
-    run_str(ton(), input, &[("pt", "5")]).expect_err("must be rejected")
+    run_str(ton(), input, pt("5")).expect_err("must be rejected")
 }
 
 fn cell(e: &TraceError) -> (u64, usize) {
@@ -124,9 +133,13 @@ fn cli_err_located() {
 /// CLI-ERR-01: a bad preset is located to its cell, or to its option.
 #[test]
 fn cli_err_preset_located() {
-    let e = run_str(ton(), b"t_ms,IN,PT\n0,1,T#1S\n1,1,T#1X\n", &[]).expect_err("bad PT");
+    let e = run_str(ton(), b"t_ms,IN,PT\n0,1,T#1S\n1,1,T#1X\n", None).expect_err("bad PT");
     assert_eq!(cell(&e), (3, 3));
-    let e = run_str(ton(), b"t_ms,IN\n", &[("pt", "T#1X")]).expect_err("bad --pt");
+    let e = PresetValue::parse(ton(), "T#1X").expect_err("bad --pt");
+    assert!(!e.is_empty(), "{e}");
+    // A preset of another kind (a library caller's mistake) is located to the block's option.
+    let tv = PresetValue::parse(BlockSpec::new(Block::SOdt), "S5T#1S").ok();
+    let e = run_str(ton(), b"t_ms,IN\n", tv).expect_err("a TV for TON");
     assert_eq!(e.location, Location::Option("pt"));
 }
 
@@ -134,14 +147,9 @@ fn cli_err_preset_located() {
 /// a trace is found at its line and column.
 #[test]
 fn cli_check_every_flipped_cell_is_found() {
-    let report = check(ton(), &[("pt", "5")], None, &b"t_ms,IN,Q,ET\n"[..]).expect("valid");
+    let report = check(ton(), pt("5"), None, &b"t_ms,IN,Q,ET\n"[..]).expect("valid");
     assert_eq!((report.rows, report.difference), (0, None));
-    let good = run_str(
-        ton(),
-        b"t_ms,IN\n0,1\n3,1\n5,1\n9,0\n12,1\n",
-        &[("pt", "5")],
-    )
-    .unwrap();
+    let good = run_str(ton(), b"t_ms,IN\n0,1\n3,1\n5,1\n9,0\n12,1\n", pt("5")).unwrap();
     let lines: Vec<&str> = good.lines().collect();
     for row in 1..lines.len() {
         for col in [2usize, 3] {
@@ -154,7 +162,7 @@ fn cli_check_every_flipped_cell_is_found() {
             let mut bad: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
             bad[row] = fields.join(",");
             let text = bad.join("\n");
-            let report = check(ton(), &[("pt", "5")], None, text.as_bytes()).expect("valid");
+            let report = check(ton(), pt("5"), None, text.as_bytes()).expect("valid");
             let d = report.difference.expect("a difference");
             assert_eq!((d.line, d.column), (row as u64 + 1, col + 1));
             assert!(!d.why.rules.is_empty());
@@ -168,13 +176,13 @@ fn cli_check_every_flipped_cell_is_found() {
 #[test]
 fn cli_check_output_selection() {
     let trace = &b"t_ms,IN,Q,ET\n0,1,0,0\n5,1,1,5\n"[..];
-    let report = check(ton(), &[("pt", "5")], Some(&["q", "Q", " et"]), trace).expect("valid");
+    let report = check(ton(), pt("5"), Some(&["q", "Q", " et"]), trace).expect("valid");
     assert_eq!(report.compared, ["Q", "ET"]);
     assert_eq!((report.rows, report.difference), (2, None));
-    let report = check(ton(), &[("pt", "5")], Some(&["ET"]), trace).expect("valid");
+    let report = check(ton(), pt("5"), Some(&["ET"]), trace).expect("valid");
     assert_eq!(report.compared, ["ET"]);
     for outputs in [&[][..], &["CV"]] {
-        let e = check(ton(), &[("pt", "5")], Some(outputs), trace).expect_err("bad --outputs");
+        let e = check(ton(), pt("5"), Some(outputs), trace).expect_err("bad --outputs");
         assert_eq!(e.location, Location::Option("outputs"), "{e}");
     }
 }
@@ -197,7 +205,7 @@ fn diagram_at_the_end_of_time() {
         let mut out = Vec::new();
         diagram::svg(
             ton(),
-            &[("pt", "T#5MS")],
+            pt("T#5MS"),
             text.as_bytes(),
             Window::default(),
             &mut out,
@@ -210,7 +218,7 @@ fn diagram_at_the_end_of_time() {
         from: Some(3),
         to: Some(3),
     };
-    diagram::svg(ton(), &[("pt", "5")], PLAIN.as_bytes(), window, &mut out).expect("draws");
+    diagram::svg(ton(), pt("5"), PLAIN.as_bytes(), window, &mut out).expect("draws");
     assert!(!String::from_utf8(out).expect("UTF-8").contains("NaN"));
 }
 
@@ -254,21 +262,22 @@ proptest! {
     #[test]
     fn runner_total_on_arbitrary_bytes(bytes in prop_oneof![csvish(), prop::collection::vec(any::<u8>(), 0..200)]) {
         for block in Block::ALL {
-            let presets: Vec<(&str, &str)> = match block.preset().map(|p| p.option) {
-                Some("tv") => vec![("tv", "S5T#20MS")],
-                Some("pt") => vec![("pt", "T#5MS")],
-                _ => vec![("pv", "3")],
-            };
             let spec = BlockSpec::new(block);
-            let reference = run_str(spec, &bytes, &presets);
-            let optimized = run_str(spec.with(Implementation::Optimized), &bytes, &presets);
+            let text = match block.preset().kind {
+                PresetKind::S5Time => "S5T#20MS",
+                PresetKind::Time => "T#5MS",
+                PresetKind::Integer | PresetKind::S5Count => "3",
+            };
+            let presets = Some(PresetValue::parse(spec, text).expect("a valid preset"));
+            let reference = run_str(spec, &bytes, presets);
+            let optimized = run_str(spec.with(Implementation::Optimized), &bytes, presets);
             prop_assert_eq!(&reference, &optimized, "{}", block);
             if let Err(e) = &reference {
                 prop_assert!(!e.message.is_empty());
             }
-            let _ = check(spec, &presets, None, &bytes[..]);
-            let _ = diagram::svg(spec, &presets, &bytes[..], Window::default(), Vec::new());
-            let _ = vcd::export(spec, &presets, &bytes[..], Vec::new());
+            let _ = check(spec, presets, None, &bytes[..]);
+            let _ = diagram::svg(spec, presets, &bytes[..], Window::default(), Vec::new());
+            let _ = vcd::export(spec, presets, &bytes[..], Vec::new());
         }
     }
 }

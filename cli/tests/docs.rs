@@ -9,22 +9,26 @@ use std::fs;
 
 use plc_timers::catalog::{Block, ValueKind};
 use plc_timers_cli::trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
-use plc_timers_cli::trace::{engine, examples, vcd, BlockSpec};
+use plc_timers_cli::trace::{engine, examples, vcd, BlockSpec, PresetValue};
 
 fn draw(
     spec: BlockSpec,
-    presets: &[(&str, &str)],
+    preset: Option<PresetValue>,
     trace: &[u8],
     window: Window,
 ) -> (String, Stats) {
     let mut out = Vec::new();
-    let stats = diagram::svg(spec, presets, trace, window, &mut out).expect("draws");
+    let stats = diagram::svg(spec, preset, trace, window, &mut out).expect("draws");
     (String::from_utf8(out).expect("UTF-8"), stats)
 }
 
+/// `text` read as `block`'s preset, as the command line's parser reads it.
+fn preset(block: Block, text: &str) -> Option<PresetValue> {
+    Some(PresetValue::parse(BlockSpec::new(block), text).expect("a valid preset"))
+}
+
 fn example_svg(e: &examples::Example) -> (String, Stats) {
-    let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
-    draw(e.spec, &presets, e.text.as_bytes(), Window::default())
+    draw(e.spec, e.preset, e.text.as_bytes(), Window::default())
 }
 
 /// CLI-DIAG-01: one diagram per block in `docs/`, each the renderer's drawing of its example:
@@ -41,7 +45,7 @@ fn docs_diagrams_are_current() {
             .block
             .inputs()
             .iter()
-            .filter(|p| p.kind == plc_timers::catalog::ValueKind::Bool)
+            .filter(|p| p.kind() == plc_timers::catalog::ValueKind::Bool)
             .count();
         let waves = svg.matches("class=\"signal\"").count();
         assert!(waves >= 2 && waves <= bools + 2, "{}: {waves}", e.stem);
@@ -127,7 +131,7 @@ fn ton_q_rises_at_expiry_and_et_ramps() {
 fn s5_bi_ramps_on_its_time_base() {
     let (svg, _) = draw(
         BlockSpec::new(Block::SPulse),
-        &[("tv", "S5T#20S")],
+        preset(Block::SPulse, "S5T#20S"),
         b"t_ms,S\n0,1\n30000,1\n",
         Window::default(),
     );
@@ -157,7 +161,7 @@ fn value_axis_covers_negative_counts() {
     }
     let (svg, _) = draw(
         BlockSpec::new(Block::Ctd),
-        &[("pv", "2")],
+        preset(Block::Ctd, "2"),
         trace.as_bytes(),
         Window::default(),
     );
@@ -220,7 +224,7 @@ fn two_million_rows_bounded_and_no_edge_lost() {
     let trace = long_trace(rows);
     let (svg, stats) = draw(
         BlockSpec::new(Block::Ton),
-        &[("pt", "T#500MS")],
+        preset(Block::Ton, "T#500MS"),
         &trace,
         Window::default(),
     );
@@ -279,12 +283,11 @@ fn two_million_rows_bounded_and_no_edge_lost() {
 #[test]
 fn window_zooms() {
     let e = examples::of(Block::Ton).expect("TON example");
-    let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
     let window = Window {
         from: Some(2200),
         to: Some(2600),
     };
-    let (svg, stats) = draw(e.spec, &presets, e.text.as_bytes(), window);
+    let (svg, stats) = draw(e.spec, e.preset, e.text.as_bytes(), window);
     assert_eq!(stats.rows, 9, "reading stops after the first row past --to");
     assert_eq!(stats.drawn, 4, "2200 (state of 2000), 2250, 2499, 2500");
     let q = polyline(&svg, "signal", "Q");
@@ -304,7 +307,7 @@ fn window_zooms() {
             from: Some(from),
             to: Some(to),
         };
-        let (_, stats) = draw(e.spec, &presets, e.text.as_bytes(), window);
+        let (_, stats) = draw(e.spec, e.preset, e.text.as_bytes(), window);
         assert_eq!((stats.rows, stats.drawn), (rows, drawn), "{from}..{to}");
     }
 }
@@ -333,7 +336,7 @@ fn bucket_drawings_are_current() {
             },
         ),
     ] {
-        let (svg, stats) = draw(tonr, &[], trace.as_bytes(), window);
+        let (svg, stats) = draw(tonr, None, trace.as_bytes(), window);
         assert!(!stats.exact, "{name}");
         let path = common::root().join(format!("cli/tests/data/{name}.svg"));
         if update {
@@ -359,14 +362,14 @@ fn exact_up_to_the_limit_then_buckets() {
     let ton = BlockSpec::new(Block::Ton);
     let (_, stats) = draw(
         ton,
-        &[("pt", "T#500MS")],
+        preset(Block::Ton, "T#500MS"),
         upto(EXACT_ROWS).as_bytes(),
         Window::default(),
     );
     assert!(stats.exact && stats.bucket_ms == 0 && stats.held == EXACT_ROWS);
     let (_, stats) = draw(
         ton,
-        &[("pt", "T#500MS")],
+        preset(Block::Ton, "T#500MS"),
         upto(EXACT_ROWS + 1).as_bytes(),
         Window::default(),
     );
@@ -379,7 +382,7 @@ fn exact_up_to_the_limit_then_buckets() {
         from: Some(1_000_000),
         to: Some(1_100_000),
     };
-    let (_, stats) = draw(ton, &[("pt", "T#500MS")], &long, window);
+    let (_, stats) = draw(ton, preset(Block::Ton, "T#500MS"), &long, window);
     assert_eq!((stats.drawn, stats.bucket_ms), (100_001, 128));
 }
 
@@ -388,9 +391,8 @@ fn exact_up_to_the_limit_then_buckets() {
 #[test]
 fn vcd_parses_back() {
     for e in examples::all().expect("examples") {
-        let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
         let mut out = Vec::new();
-        let rows = vcd::export(e.spec, &presets, e.text.as_bytes(), &mut out).expect("exports");
+        let rows = vcd::export(e.spec, e.preset, e.text.as_bytes(), &mut out).expect("exports");
         let mut parser = ::vcd::Parser::new(&out[..]);
         let header = parser.parse_header().expect("a VCD header");
         assert_eq!(header.timescale, Some((1, ::vcd::TimescaleUnit::MS)));
@@ -408,7 +410,7 @@ fn vcd_parses_back() {
             .collect();
         for port in e.spec.block.outputs() {
             assert!(
-                names.iter().any(|n| n == port.name),
+                names.iter().any(|n| n == port.name()),
                 "{}: {names:?}",
                 e.stem
             );
@@ -427,7 +429,13 @@ fn vcd_parses_back() {
     // TON: Q rises at 2500 ms.
     let e = examples::of(Block::Ton).expect("TON");
     let mut out = Vec::new();
-    vcd::export(e.spec, &[("pt", "T#500MS")], e.text.as_bytes(), &mut out).expect("exports");
+    vcd::export(
+        e.spec,
+        preset(Block::Ton, "T#500MS"),
+        e.text.as_bytes(),
+        &mut out,
+    )
+    .expect("exports");
     let text = String::from_utf8(out).expect("ASCII");
     let at = text.find("#2500\n").expect("a change at 2500 ms");
     let q_id = text
@@ -455,10 +463,9 @@ fn vcd_agrees_with_run() {
     use ::vcd::{Command, IdCode, Value as Bit, VarType};
     use std::collections::HashMap;
     for e in examples::all().expect("examples") {
-        let presets: Vec<(&str, &str)> = e.preset.into_iter().collect();
         // The run's rows by time: the last row of each time.
         let mut csv = Vec::new();
-        engine::run(e.spec, &presets, e.text.as_bytes(), &mut csv).expect("runs");
+        engine::run(e.spec, e.preset, e.text.as_bytes(), &mut csv).expect("runs");
         let csv = String::from_utf8(csv).expect("UTF-8");
         let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
         let header: Vec<String> = lines
@@ -479,7 +486,7 @@ fn vcd_agrees_with_run() {
         }
         // The VCD's declarations and its values at the end of each timestamp.
         let mut out = Vec::new();
-        vcd::export(e.spec, &presets, e.text.as_bytes(), &mut out).expect("exports");
+        vcd::export(e.spec, e.preset, e.text.as_bytes(), &mut out).expect("exports");
         let mut declared: HashMap<IdCode, (VarType, u32, String)> = HashMap::new();
         let mut values: HashMap<IdCode, i128> = HashMap::new();
         let mut snapshots: Vec<(u64, HashMap<IdCode, i128>)> = Vec::new();
@@ -529,22 +536,21 @@ fn vcd_agrees_with_run() {
                 let port_kind = block
                     .outputs()
                     .iter()
-                    .find(|p| p.name == name.as_str())
-                    .map(|p| p.kind);
-                let is_input = block.inputs().iter().any(|p| p.name == name.as_str());
+                    .find(|p| p.name() == name.as_str())
+                    .map(|p| p.kind());
+                let is_input = block.inputs().iter().any(|p| p.name() == name.as_str());
                 let expected_decl = match port_kind {
                     Some(ValueKind::Bool) => (VarType::Wire, 1),
                     Some(ValueKind::Word) => (VarType::Reg, 16),
                     Some(_) => (VarType::Integer, vcd::INT_BITS),
-                    None if is_input && block.preset().map(|p| p.name) != Some(name.as_str()) => {
+                    None if is_input && block.preset().port.name() != name.as_str() => {
                         (VarType::Wire, 1)
                     }
                     None => (VarType::Integer, vcd::INT_BITS),
                 };
                 assert_eq!((*ty, *size), expected_decl, "{}: {name}", e.stem);
                 let Some(col) = header.iter().position(|h| *h == name.to_ascii_uppercase()) else {
-                    if block.preset().map(|p| p.name) == Some(name.as_str()) && block == Block::Ton
-                    {
+                    if block.preset().port.name() == name.as_str() && block == Block::Ton {
                         assert_eq!(vals.get(id), Some(&500), "TON: PT at {t}");
                     }
                     continue;

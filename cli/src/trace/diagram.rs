@@ -12,11 +12,11 @@
 use std::fmt::Write as _;
 use std::io::{Read, Write};
 
-use plc_timers::catalog::ValueKind;
+use plc_timers::catalog::{Port, ValueKind};
 
-use super::engine::{observe, Columns, Observation, Observer, PresetOption};
+use super::engine::{observe, Columns, Observation, Observer};
 use super::error::Error;
-use super::family::{BlockSpec, Value};
+use super::family::{BlockSpec, PresetValue, Value};
 
 /// Rows drawn one by one; a longer trace is drawn from buckets.
 pub const EXACT_ROWS: usize = 2048;
@@ -66,6 +66,8 @@ struct Sample {
     v: [i128; LANES],
     /// Signed milliseconds per unit of the ramp while it runs (ET +1, BI minus its base).
     ramp: Option<i64>,
+    /// The preset as written.
+    preset: PresetValue,
 }
 
 /// The rows of one time bucket, per lane.
@@ -171,7 +173,7 @@ struct Lane {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum LaneKind {
-    Input(u32),
+    Input(Port),
     BoolOutput(usize),
     Ramp(usize),
 }
@@ -192,6 +194,8 @@ struct Diagram {
     origin: Option<u64>,
     /// The last drawn row's offset.
     last_t: u64,
+    /// The first drawn row's preset, and whether a later drawn row has another.
+    preset: Option<(PresetValue, bool)>,
     stats: Stats,
 }
 
@@ -200,7 +204,7 @@ impl Diagram {
         let mut v = [0i128; LANES];
         for (k, lane) in self.lanes.iter().enumerate() {
             v[k] = match lane.kind {
-                LaneKind::Input(bit) => i128::from(o.signals.0 & bit != 0),
+                LaneKind::Input(port) => i128::from(o.signals.get(port)),
                 LaneKind::BoolOutput(i) | LaneKind::Ramp(i) => match o.outputs.as_slice()[i] {
                     Value::Bool(b) => i128::from(b),
                     Value::Int(x) => x,
@@ -216,13 +220,22 @@ impl Diagram {
                 Some(plc_timers::catalog::Family::S5Timer) => -(ms as i64),
                 _ => ms as i64,
             });
-        Sample { t: o.t, v, ramp }
+        Sample {
+            t: o.t,
+            v,
+            ramp,
+            preset: o.preset_value,
+        }
     }
 
     fn push(&mut self, mut s: Sample) {
         let origin = *self.origin.get_or_insert(self.window.from.unwrap_or(s.t));
         s.t -= origin;
         self.last_t = s.t;
+        match &mut self.preset {
+            None => self.preset = Some((s.preset, false)),
+            Some((first, changes)) => *changes |= *first != s.preset,
+        }
         self.stats.drawn += 1;
         match &mut self.buckets {
             Some(b) => b.add(&s),
@@ -245,20 +258,20 @@ impl Diagram {
 
 impl Observer for Diagram {
     fn start(&mut self, columns: &Columns) -> Result<(), Error> {
-        for &(name, bit) in &columns.inputs {
+        for &port in &columns.inputs {
             self.lanes.push(Lane {
-                name,
-                kind: LaneKind::Input(bit),
+                name: port.name(),
+                kind: LaneKind::Input(port),
             });
         }
         for (i, port) in columns.block.outputs().iter().enumerate() {
-            let kind = match port.kind {
+            let kind = match port.kind() {
                 ValueKind::Bool => LaneKind::BoolOutput(i),
                 ValueKind::Int => LaneKind::Ramp(i),
                 _ => continue,
             };
             self.lanes.push(Lane {
-                name: port.name,
+                name: port.name(),
                 kind,
             });
         }
@@ -298,7 +311,7 @@ impl Observer for Diagram {
 /// Draws the trace read from `input` through the block of `spec` as an SVG to `out`.
 pub fn svg<R: Read, W: Write>(
     spec: BlockSpec,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     window: Window,
     mut out: W,
@@ -313,9 +326,10 @@ pub fn svg<R: Read, W: Write>(
         before: None,
         origin: None,
         last_t: 0,
+        preset: None,
         stats: Stats::default(),
     };
-    observe(spec, presets, input, &mut d)?;
+    observe(spec, preset, input, &mut d)?;
     // A window past the trace's end still shows the state the trace left.
     if d.origin.is_none() {
         if let Some(b) = d.before.take() {
@@ -498,11 +512,17 @@ fn render(d: &Diagram) -> String {
     } else {
         d.exact.iter().map(|e| e.v[d.preset_lane]).collect()
     };
-    let constant_preset = presets.windows(2).all(|w| w[0] == w[1]);
-    let title = match (columns.preset, presets.first()) {
-        (Some(name), Some(p)) if constant_preset => format!("{}, {name} = {p}", columns.block),
-        (Some(name), Some(_)) => format!("{}, {name} changes", columns.block),
-        _ => columns.block.name().to_string(),
+    // The preset as its literal (`TV = S5T#50MS`), and where it comes from.
+    let pname = columns.block.preset().port.name();
+    let (label, title) = match d.preset {
+        Some((p, false)) => (format!("{pname} = {p}"), format!("{pname} = {p}")),
+        Some((_, true)) => (pname.to_string(), format!("{pname} changes")),
+        None => (pname.to_string(), String::new()),
+    };
+    let title = match (title.is_empty(), columns.preset_column) {
+        (true, _) => columns.block.name().to_string(),
+        (false, false) => format!("{}, {title}", columns.block),
+        (false, true) => format!("{}, {title} (from the trace)", columns.block),
     };
     let _ = writeln!(
         s,
@@ -589,22 +609,16 @@ fn render(d: &Diagram) -> String {
                     }
                     v += step.max(1);
                 }
-                if let Some(pname) = columns.preset {
-                    let label = match presets.last() {
-                        Some(p) if constant_preset => format!("{pname} = {p}"),
-                        _ => pname.to_string(),
-                    };
-                    let py = presets.last().map_or(lo, |p| scale(*p));
-                    let _ = writeln!(
-                        s,
-                        "<polyline class=\"preset\" data-name=\"{pname}\" points=\"{}\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"5,4\"/>\n\
-                         <text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\" text-anchor=\"end\">{}</text>",
-                        points(d.preset_lane, false, &scale),
-                        WIDTH - RIGHT,
-                        py - 4.0,
-                        escape(&label)
-                    );
-                }
+                let py = presets.last().map_or(lo, |p| scale(*p));
+                let _ = writeln!(
+                    s,
+                    "<polyline class=\"preset\" data-name=\"{pname}\" points=\"{}\" fill=\"none\" stroke=\"#888\" stroke-dasharray=\"5,4\"/>\n\
+                     <text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\" text-anchor=\"end\">{}</text>",
+                    points(d.preset_lane, false, &scale),
+                    WIDTH - RIGHT,
+                    py - 4.0,
+                    escape(&label)
+                );
                 let _ = writeln!(
                     s,
                     "<polyline class=\"ramp\" data-name=\"{name}\" points=\"{}\" fill=\"none\" stroke=\"#27ae60\" stroke-width=\"2\"/>",

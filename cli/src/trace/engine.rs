@@ -1,21 +1,20 @@
 //! The trace engine: the header resolved once against the catalog into column indices, typed
 //! rows, and the three ways a trace is consumed: [`run`] (write the reference outputs),
 //! [`check`] (compare another implementation's outputs) and [`observe`] (hand each step to a
-//! diagram or a VCD writer). All three are generic over the [`Family`] that
+//! diagram or a VCD writer). All three are generic over the [`Adapter`] that
 //! [`dispatch`] chooses.
 
 use std::fmt;
 use std::io::{Read, Write};
 
-use plc_timers::catalog::{Block, ValueKind};
+use plc_timers::catalog::{Block, Port, ValueKind};
 
 use super::error::{show, Error, Location, TraceError};
-use super::family::{dispatch, BlockSpec, Family, Outputs, Signals, Step, Value, Visit, Why};
+use super::family::{
+    dispatch, Adapter, BlockSpec, Outputs, PresetValue, Signals, Step, Value, Visit, Why,
+};
 use super::reader::{Reader, Record};
 use super::rules;
-
-/// A preset given on the command line: (option without dashes, value), e.g. `("pt", "T#1S")`.
-pub type PresetOption<'a> = (&'a str, &'a str);
 
 /// The name of the time column.
 pub const TIME_COLUMN: &str = "t_ms";
@@ -44,8 +43,8 @@ struct Layout {
     names: Vec<String>,
     /// The column of `t_ms`.
     time: Option<usize>,
-    /// Each boolean input column and its [`Signals`] bit.
-    bools: Vec<(usize, u32)>,
+    /// Each boolean input column and its input.
+    bools: Vec<(usize, Port)>,
     /// The column of the preset.
     preset: Option<usize>,
     /// Each output column and its catalog index (check).
@@ -85,18 +84,19 @@ impl Layout {
             let input = block
                 .inputs()
                 .iter()
-                .position(|p| p.name.eq_ignore_ascii_case(name));
+                .position(|p| p.name().eq_ignore_ascii_case(name));
             let output = block
                 .outputs()
                 .iter()
-                .position(|p| p.name.eq_ignore_ascii_case(name));
+                .position(|p| p.name().eq_ignore_ascii_case(name));
             let duplicate = if name.eq_ignore_ascii_case(TIME_COLUMN) {
                 layout.time.replace(i).is_some()
             } else if let Some(k) = input {
                 let again = seen_inputs >> k & 1 == 1;
                 seen_inputs |= 1 << k;
-                match block.inputs()[k].kind {
-                    ValueKind::Bool => layout.bools.push((i, 1 << k)),
+                let port = block.inputs()[k];
+                match port.kind() {
+                    ValueKind::Bool => layout.bools.push((i, port)),
                     _ => layout.preset = Some(i),
                 }
                 again
@@ -137,9 +137,9 @@ impl Layout {
 /// The columns `block`'s traces may have, as a message lists them.
 fn columns(block: Block, mode: Mode) -> String {
     let mut names = vec![TIME_COLUMN];
-    names.extend(block.inputs().iter().map(|p| p.name));
+    names.extend(block.inputs().iter().map(|p| p.name()));
     if mode == Mode::WithOutputs {
-        names.extend(block.outputs().iter().map(|p| p.name));
+        names.extend(block.outputs().iter().map(|p| p.name()));
     }
     names.join(", ")
 }
@@ -219,7 +219,7 @@ pub fn parse_value(kind: ValueKind, cell: &[u8]) -> Option<Value> {
                 None => text.parse::<u16>().ok().map(Value::Word),
             }
         }
-        ValueKind::Int | ValueKind::Preset(_) => text.parse::<i128>().ok().map(Value::Int),
+        ValueKind::Int | ValueKind::Preset => text.parse::<i128>().ok().map(Value::Int),
     }
 }
 
@@ -256,7 +256,7 @@ fn write_value(out: &mut Vec<u8>, v: Value) {
 }
 
 /// One executed row.
-struct Row<F: Family> {
+struct Row<F: Adapter> {
     /// `t_ms`, or the row's index (0-based) when the trace has none.
     t: u64,
     /// The previous row's `t` (0 before the first row).
@@ -267,7 +267,7 @@ struct Row<F: Family> {
 }
 
 /// A family with its resolved header, driven row by row.
-struct Engine<F: Family> {
+struct Engine<F: Adapter> {
     family: F,
     layout: Layout,
     /// The preset of the command line, parsed once.
@@ -279,48 +279,27 @@ struct Engine<F: Family> {
     rows: u64,
 }
 
-impl<F: Family> Engine<F> {
+impl<F: Adapter> Engine<F> {
     fn new(
         family: F,
         header: &Record<'_>,
         mode: Mode,
-        presets: &[PresetOption<'_>],
+        preset: Option<PresetValue>,
     ) -> Result<Engine<F>, TraceError> {
         let block = family.block();
         let layout = Layout::resolve(block, header, mode)?;
-        let preset = block.preset();
-        let mut option = None;
-        for &(name, value) in presets {
-            match preset {
-                Some(p) if p.option == name => {
-                    let parsed = family.parse_preset(value.trim()).map_err(|e| {
-                        TraceError::new(
-                            Location::Option(p.option),
-                            format!("`{}`: {e}", show(value.as_bytes())),
-                        )
-                    })?;
-                    option = Some(parsed);
-                }
-                _ => {
-                    return Err(TraceError::new(
-                        Location::Command,
-                        format!(
-                            "option --{name} does not apply to {block}{}",
-                            preset.map_or(String::new(), |p| format!(
-                                "; its preset {} is given with --{}",
-                                p.name, p.option
-                            ))
-                        ),
-                    ))
-                }
-            }
-        }
-        if let (Some(p), None, None) = (preset, layout.preset, option) {
+        let p = block.preset();
+        let option = preset
+            .map(|v| family.preset(v))
+            .transpose()
+            .map_err(|e| TraceError::new(Location::Option(p.option), e))?;
+        if let (None, None) = (layout.preset, option) {
             return Err(TraceError::new(
                 Location::Line(layout.line),
                 format!(
                     "{block} needs its preset: a `{}` column or the option --{}",
-                    p.name, p.option
+                    p.port.name(),
+                    p.option
                 ),
             ));
         }
@@ -374,10 +353,10 @@ impl<F: Family> Engine<F> {
             }
             None => self.rows,
         };
-        let mut signals = 0u32;
-        for &(i, bit) in &self.layout.bools {
+        let mut signals = Signals::NONE;
+        for &(i, port) in &self.layout.bools {
             match parse_bool(rec.cell(i)) {
-                Some(true) => signals |= bit,
+                Some(true) => signals = signals.with(port),
                 Some(false) => {}
                 None => {
                     return Err(Box::new(self.cell_error(
@@ -404,13 +383,13 @@ impl<F: Family> Engine<F> {
         };
         // 0 before the first row, as the blocks' own previous call.
         let last = self.last;
-        let output = self.family.call(t, Signals(signals), preset);
+        let output = self.family.call(t, signals, preset);
         self.last = t;
         self.rows += 1;
         Ok(Row {
             t,
             last,
-            signals: Signals(signals),
+            signals,
             preset,
             output,
         })
@@ -480,34 +459,34 @@ fn empty() -> TraceError {
 /// (and flushed) and the error is returned. Returns the number of data rows.
 pub fn run<R: Read, W: Write>(
     spec: BlockSpec,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     output: W,
 ) -> Result<u64, Error> {
-    struct V<'a, R, W>(&'a [PresetOption<'a>], R, W);
-    impl<R: Read, W: Write> Visit for V<'_, R, W> {
+    struct V<R, W>(Option<PresetValue>, R, W);
+    impl<R: Read, W: Write> Visit for V<R, W> {
         type Out = Result<u64, Error>;
-        fn visit<F: Family>(self, family: F) -> Self::Out {
+        fn visit<F: Adapter>(self, family: F) -> Self::Out {
             run_family(family, self.0, self.1, self.2)
         }
     }
-    dispatch(spec, V(presets, input, output))
+    dispatch(spec, V(preset, input, output))
 }
 
-fn run_family<F: Family, R: Read, W: Write>(
+fn run_family<F: Adapter, R: Read, W: Write>(
     family: F,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     mut output: W,
 ) -> Result<u64, Error> {
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::Inputs, presets)?;
+    let mut engine = Engine::new(family, &header, Mode::Inputs, preset)?;
     let mut out: Vec<u8> = Vec::with_capacity(OUT_BUFFER + 1024);
     out.extend_from_slice(header.raw());
     for p in engine.family.block().outputs() {
         out.push(b',');
-        out.extend_from_slice(p.name.as_bytes());
+        out.extend_from_slice(p.name().as_bytes());
     }
     out.push(b'\n');
     let result = loop {
@@ -630,18 +609,18 @@ pub struct CheckReport {
 /// compared and the trace must have a column for each. A malformed output cell is bad input.
 pub fn check<R: Read>(
     spec: BlockSpec,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     outputs: Option<&[&str]>,
     input: R,
 ) -> Result<CheckReport, TraceError> {
-    struct V<'a, R>(&'a [PresetOption<'a>], Option<&'a [&'a str]>, R);
+    struct V<'a, R>(Option<PresetValue>, Option<&'a [&'a str]>, R);
     impl<R: Read> Visit for V<'_, R> {
         type Out = Result<CheckReport, TraceError>;
-        fn visit<F: Family>(self, family: F) -> Self::Out {
+        fn visit<F: Adapter>(self, family: F) -> Self::Out {
             check_family(family, self.0, self.1, self.2)
         }
     }
-    dispatch(spec, V(presets, outputs, input))
+    dispatch(spec, V(preset, outputs, input))
 }
 
 /// The catalog indices of the outputs to compare.
@@ -650,12 +629,12 @@ fn chosen_outputs(block: Block, outputs: Option<&[&str]>) -> Result<Vec<usize>, 
     let Some(names) = outputs else {
         return Ok((0..all.len()).collect());
     };
-    let list: Vec<&str> = all.iter().map(|p| p.name).collect();
+    let list: Vec<&str> = all.iter().map(|p| p.name()).collect();
     let mut chosen = Vec::new();
     for name in names {
         let i = all
             .iter()
-            .position(|p| p.name.eq_ignore_ascii_case(name.trim()))
+            .position(|p| p.name().eq_ignore_ascii_case(name.trim()))
             .ok_or_else(|| {
                 TraceError::new(
                     Location::Option("outputs"),
@@ -690,14 +669,14 @@ fn values_of(block: Block, compared: &[(usize, usize)], text: &[u8]) -> Vec<(&'s
         .iter()
         .filter_map(|&(column, o)| {
             let port = block.outputs()[o];
-            parse_value(port.kind, rec.cell(column)).map(|v| (port.name, v))
+            parse_value(port.kind(), rec.cell(column)).map(|v| (port.name(), v))
         })
         .collect()
 }
 
-fn check_family<F: Family, R: Read>(
+fn check_family<F: Adapter, R: Read>(
     family: F,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     outputs: Option<&[&str]>,
     input: R,
 ) -> Result<CheckReport, TraceError> {
@@ -705,7 +684,7 @@ fn check_family<F: Family, R: Read>(
     let chosen = chosen_outputs(block, outputs)?;
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::WithOutputs, presets)?;
+    let mut engine = Engine::new(family, &header, Mode::WithOutputs, preset)?;
     // The compared columns: (column, output index), in the order of the catalog.
     let mut compared = Vec::with_capacity(chosen.len());
     for &o in &chosen {
@@ -713,13 +692,13 @@ fn check_family<F: Family, R: Read>(
         match engine.layout.outputs.iter().find(|&&(_, k)| k == o) {
             Some(&(column, _)) => compared.push((column, o)),
             None => {
-                let names: Vec<&str> = block.outputs().iter().map(|p| p.name).collect();
+                let names: Vec<&str> = block.outputs().iter().map(|p| p.name()).collect();
                 return Err(TraceError::new(
                     Location::Line(engine.layout.line),
                     format!(
                         "the trace has no `{}` column; {block}'s outputs are {} (compare fewer \
                          with --outputs, e.g. --outputs {})",
-                        port.name,
+                        port.name(),
                         names.join(","),
                         names[0]
                     ),
@@ -732,14 +711,14 @@ fn check_family<F: Family, R: Read>(
         rows: 0,
         compared: compared
             .iter()
-            .map(|&(_, o)| block.outputs()[o].name)
+            .map(|&(_, o)| block.outputs()[o].name())
             .collect(),
         difference: None,
     };
     let mut found = [Value::Bool(false); super::family::MAX_OUTPUTS];
     let kinds: Vec<ValueKind> = compared
         .iter()
-        .map(|&(_, o)| block.outputs()[o].kind)
+        .map(|&(_, o)| block.outputs()[o].kind())
         .collect();
     while let Some(rec) = reader.next_record()? {
         let before = engine.family.state();
@@ -755,7 +734,7 @@ fn check_family<F: Family, R: Read>(
                     format!(
                         "`{}` is not a valid {} output; it is {}",
                         show(cell),
-                        block.outputs()[o].name,
+                        block.outputs()[o].name(),
                         allowed(kind)
                     ),
                 ));
@@ -781,7 +760,7 @@ fn check_family<F: Family, R: Read>(
             let shown = |values: &Outputs| -> Vec<(&'static str, Value)> {
                 compared
                     .iter()
-                    .map(|&(_, o)| (block.outputs()[o].name, values.as_slice()[o]))
+                    .map(|&(_, o)| (block.outputs()[o].name(), values.as_slice()[o]))
                     .collect()
             };
             let this = ContextRow {
@@ -812,7 +791,7 @@ fn check_family<F: Family, R: Read>(
             report.difference = Some(Difference {
                 line: rows[rows.len() - 1].line,
                 column: column + 1,
-                output: block.outputs()[o].name,
+                output: block.outputs()[o].name(),
                 expected: values.as_slice()[o],
                 found,
                 why,
@@ -834,10 +813,10 @@ pub struct Columns {
     pub block: Block,
     /// Whether the trace has `t_ms` (otherwise the time of a row is its index).
     pub timed: bool,
-    /// The boolean inputs the trace has, in catalog order, with their [`Signals`] bits.
-    pub inputs: Vec<(&'static str, u32)>,
-    /// The preset's name.
-    pub preset: Option<&'static str>,
+    /// The boolean inputs the trace has, in catalog order.
+    pub inputs: Vec<Port>,
+    /// Whether the preset is a column of the trace (otherwise the command line gives it).
+    pub preset_column: bool,
 }
 
 /// One step as an [`Observer`] sees it.
@@ -851,10 +830,12 @@ pub struct Observation {
     pub signals: Signals,
     /// The outputs, in catalog order.
     pub outputs: Outputs,
-    /// Milliseconds per unit of the integer output while it runs ([`Family::ramp`]).
+    /// Milliseconds per unit of the integer output while it runs ([`Adapter::ramp`]).
     pub ramp: Option<u64>,
-    /// The preset in the unit of the integer output ([`Family::preset_mark`]).
+    /// The preset in the unit of the integer output ([`Adapter::preset_mark`]).
     pub preset: i128,
+    /// The preset as written ([`Adapter::preset_value`]).
+    pub preset_value: PresetValue,
 }
 
 /// Something that consumes a trace step by step (a diagram, a VCD file).
@@ -868,42 +849,41 @@ pub trait Observer {
 /// Runs the trace through the block of `spec` and hands each step to `observer`.
 pub fn observe<R: Read>(
     spec: BlockSpec,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     observer: &mut dyn Observer,
 ) -> Result<(), Error> {
-    struct V<'a, R>(&'a [PresetOption<'a>], R, &'a mut dyn Observer);
+    struct V<'a, R>(Option<PresetValue>, R, &'a mut dyn Observer);
     impl<R: Read> Visit for V<'_, R> {
         type Out = Result<(), Error>;
-        fn visit<F: Family>(self, family: F) -> Self::Out {
+        fn visit<F: Adapter>(self, family: F) -> Self::Out {
             observe_family(family, self.0, self.1, self.2)
         }
     }
-    dispatch(spec, V(presets, input, observer))
+    dispatch(spec, V(preset, input, observer))
 }
 
-fn observe_family<F: Family, R: Read>(
+fn observe_family<F: Adapter, R: Read>(
     family: F,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     observer: &mut dyn Observer,
 ) -> Result<(), Error> {
     let block = family.block();
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::Inputs, presets)?;
+    let mut engine = Engine::new(family, &header, Mode::Inputs, preset)?;
     let inputs = block
         .inputs()
         .iter()
-        .enumerate()
-        .filter(|(k, _)| engine.layout.bools.iter().any(|&(_, bit)| bit == 1 << k))
-        .map(|(k, p)| (p.name, 1u32 << k))
+        .copied()
+        .filter(|&p| engine.layout.bools.iter().any(|&(_, q)| q == p))
         .collect();
     observer.start(&Columns {
         block,
         timed: engine.layout.time.is_some(),
         inputs,
-        preset: block.preset().map(|p| p.name),
+        preset_column: engine.layout.preset.is_some(),
     })?;
     while let Some(rec) = reader.next_record()? {
         let row = engine.step(&rec).map_err(|e| *e)?;
@@ -914,6 +894,7 @@ fn observe_family<F: Family, R: Read>(
             outputs: engine.family.values(&row.output),
             ramp: engine.family.ramp(&row.output),
             preset: engine.family.preset_mark(row.preset),
+            preset_value: engine.family.preset_value(row.preset),
         })?;
         if !go_on {
             break;

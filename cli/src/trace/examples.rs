@@ -5,7 +5,7 @@
 
 use plc_timers::catalog::Block;
 
-use super::family::BlockSpec;
+use super::family::{BlockSpec, PresetValue};
 
 mod files {
     include!(concat!(env!("OUT_DIR"), "/examples.rs"));
@@ -27,8 +27,10 @@ pub struct Example {
     pub command: &'static str,
     /// The block and `--type`.
     pub spec: BlockSpec,
-    /// The preset option and its value, if the command gives one.
-    pub preset: Option<(&'static str, &'static str)>,
+    /// The preset as the command writes it (`T#500ms`), if the command gives one.
+    pub preset_text: Option<&'static str>,
+    /// That preset, read for the block.
+    pub preset: Option<PresetValue>,
     /// The whole text.
     pub text: &'static str,
 }
@@ -49,13 +51,13 @@ fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
             "{stem}.csv: `{command}` must be `run BLOCK … {file}`"
         ));
     }
-    let mut preset = None;
+    let mut preset_text = None;
     let mut int_type = None;
     let options = &rest[..rest.len() - 1];
     for pair in options.chunks(2) {
         match pair {
             ["--type", t] => int_type = Some(*t),
-            [o, v] if o.starts_with("--") => preset = Some((&o[2..], *v)),
+            [o, v] if o.starts_with("--") => preset_text = Some((&o[2..], *v)),
             _ => {
                 return Err(format!(
                     "{stem}.csv: cannot read the options of `{command}`"
@@ -64,10 +66,24 @@ fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
         }
     }
     let spec = BlockSpec::parse(block, int_type).map_err(|e| format!("{stem}.csv: {e}"))?;
+    let option = spec.block.preset().option;
+    let preset = match preset_text {
+        Some((o, _)) if o != option => {
+            return Err(format!(
+                "{stem}.csv: {} takes --{option}, not --{o}",
+                spec.block
+            ))
+        }
+        Some((_, v)) => Some(
+            PresetValue::parse(spec, v).map_err(|e| format!("{stem}.csv: --{option} {v}: {e}"))?,
+        ),
+        None => None,
+    };
     Ok(Example {
         stem,
         command,
         spec,
+        preset_text: preset_text.map(|(_, v)| v),
         preset,
         text,
     })
@@ -100,8 +116,8 @@ mod tests {
             assert_eq!(mine.len(), 1, "{block}");
             assert_eq!(mine[0].stem, block.name().to_ascii_lowercase());
             assert_eq!(
-                mine[0].preset.map(|p| p.0),
-                block.preset().map(|p| p.option),
+                mine[0].preset.map(|p| p.kind()),
+                Some(block.preset().kind),
                 "{block}"
             );
         }
@@ -123,7 +139,12 @@ mod tests {
             e.spec,
             BlockSpec::parse("CTU", Some("usint")).expect("USINT")
         );
-        assert_eq!(e.preset, Some(("pv", "3")));
+        assert_eq!(e.preset, Some(PresetValue::Integer(3)));
+        assert!(parse(
+            "x",
+            "# cargo run --release -- run CTU --tv 3 examples/traces/x.csv\n"
+        )
+        .is_err());
         assert!(parse(
             "x",
             "# cargo run --release -- run CTU pv 3 examples/traces/x.csv\n"

@@ -2,16 +2,16 @@
 //! through its interface trait ([`S5TimerOps`], [`IecTimerOps`], [`CounterOps`],
 //! [`S5CounterOps`]), so the same code drives the reference and the optimized implementation.
 //! [`dispatch`] picks the family, the implementation and (IEC counters) the integer type from a
-//! [`BlockSpec`]; everything else is generic over [`Family`].
+//! [`BlockSpec`]; everything else is generic over [`Adapter`].
 //!
-//! Each family also classifies a step for `check` ([`Family::explain`]): from the block's state
+//! Each family also classifies a step for `check` ([`Adapter::explain`]): from the block's state
 //! before and after the step it names the requirement that decides an output there. The
 //! semantics stay in the core: the classifier only reads the states the core reports.
 
 use std::fmt;
 use std::marker::PhantomData;
 
-use plc_timers::catalog::{Block, Kind, ValueKind};
+use plc_timers::catalog::{Block, Kind, Port, PresetKind, ValueKind};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
     S5CounterRef, S5CounterState,
@@ -85,31 +85,48 @@ impl Outputs {
     }
 }
 
-/// The boolean inputs of a row: bit `i` is the catalog's input `i` of the block.
+/// The boolean inputs of a row, one bit per [`Port`]: what a block's adapter reads by port.
+///
+/// ```
+/// use plc_timers::catalog::Port;
+/// use plc_timers_cli::trace::Signals;
+/// let on = Signals::of(&[Port::Cu, Port::R]);
+/// assert!(on.get(Port::Cu) && on.get(Port::R) && !on.get(Port::Cd));
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Signals(pub u32);
+pub struct Signals(u32);
 
 impl Signals {
-    fn get(self, pin: Pin) -> bool {
-        self.0 & pin.0 != 0
+    /// No input at 1.
+    pub const NONE: Signals = Signals(0);
+
+    /// `port`'s bit.
+    #[inline(always)]
+    const fn bit(port: Port) -> u32 {
+        1 << port as u32
+    }
+
+    /// The inputs `ports` at 1, every other at 0.
+    pub fn of(ports: &[Port]) -> Signals {
+        ports.iter().fold(Signals::NONE, |s, &p| s.with(p))
+    }
+
+    /// These signals with `port` at 1.
+    #[inline(always)]
+    #[must_use]
+    pub const fn with(self, port: Port) -> Signals {
+        Signals(self.0 | Signals::bit(port))
+    }
+
+    /// Whether `port` is at 1.
+    #[inline(always)]
+    pub const fn get(self, port: Port) -> bool {
+        self.0 & Signals::bit(port) != 0
     }
 }
 
-/// The bit of a catalog input in [`Signals`], resolved by name once when the adapter is built;
-/// 0 (never set) for an input the block does not have (TON has no R).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Pin(u32);
-
-impl Pin {
-    fn of(block: Block, name: &str) -> Pin {
-        Pin(input_bit(block, name))
-    }
-}
-
-/// The [`Signals`] bit of `block`'s input `name`; 0 when the block has no such input.
-pub fn input_bit(block: Block, name: &str) -> u32 {
-    block.input_index(name).map_or(0, |i| 1 << i)
-}
+// A port's bit must fit.
+const _: () = assert!(Port::ALL.len() <= 32);
 
 /// Which implementation of a block to drive.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -178,6 +195,18 @@ impl IntType {
             .find(|t| t.name().eq_ignore_ascii_case(name))
     }
 
+    /// The type called `name`, or the error that lists the types (the value parser of
+    /// `--type`).
+    pub fn parse(name: &str) -> Result<IntType, String> {
+        IntType::lookup(name).ok_or_else(|| {
+            format!(
+                "unknown integer type `{}`; --type takes one of {}",
+                super::error::show(name.as_bytes()),
+                IntType::names()
+            )
+        })
+    }
+
     /// Every name, separated by blanks.
     pub fn names() -> String {
         let names: Vec<&str> = IntType::ALL.iter().map(|t| t.name()).collect();
@@ -211,39 +240,28 @@ impl BlockSpec {
         }
     }
 
-    /// The block called `name` (case-insensitive, aliases accepted), with `--type`.
+    /// The block called `name` (case-insensitive, aliases accepted), with `--type`: the
+    /// checks of the command line's parser, for a command read from text (the examples).
     pub fn parse(name: &str, int_type: Option<&str>) -> Result<BlockSpec, TraceError> {
-        let block = Block::lookup(name).ok_or_else(|| {
-            TraceError::new(
-                Location::Command,
-                format!(
-                    "unknown block `{}`; the blocks are {}",
-                    super::error::show(name.as_bytes()),
-                    block_names()
-                ),
-            )
-        })?;
+        let block = parse_block(name).map_err(|e| TraceError::new(Location::Command, e))?;
+        let int_type = int_type
+            .map(IntType::parse)
+            .transpose()
+            .map_err(|e| TraceError::new(Location::Option("type"), e))?;
+        BlockSpec::typed(block, int_type).map_err(|e| TraceError::new(Location::Option("type"), e))
+    }
+
+    /// `block` with the integer type `int_type`, which only the IEC counters take.
+    pub fn typed(block: Block, int_type: Option<IntType>) -> Result<BlockSpec, String> {
         let mut spec = BlockSpec::new(block);
         if let Some(t) = int_type {
             if !matches!(block.kind(), Kind::IecCounter(_)) {
-                return Err(TraceError::new(
-                    Location::Option("type"),
-                    format!(
-                        "--type applies to the IEC counters ({}) only, not to {block}",
-                        names_of(|b| matches!(b.kind(), Kind::IecCounter(_)))
-                    ),
+                return Err(format!(
+                    "--type applies to the IEC counters ({}) only, not to {block}",
+                    names_of(|b| matches!(b.kind(), Kind::IecCounter(_)))
                 ));
             }
-            spec.int_type = IntType::lookup(t).ok_or_else(|| {
-                TraceError::new(
-                    Location::Option("type"),
-                    format!(
-                        "unknown integer type `{}`; --type takes one of {}",
-                        super::error::show(t.as_bytes()),
-                        IntType::names()
-                    ),
-                )
-            })?;
+            spec.int_type = t;
         }
         Ok(spec)
     }
@@ -255,6 +273,86 @@ impl BlockSpec {
             ..self
         }
     }
+}
+
+/// The block called `name` (ASCII case ignored, aliases accepted), or the error that lists the
+/// blocks (the value parser of the command line's block).
+pub fn parse_block(name: &str) -> Result<Block, String> {
+    Block::lookup(name).ok_or_else(|| {
+        format!(
+            "unknown block `{}`; the blocks are {}",
+            super::error::show(name.as_bytes()),
+            block_names()
+        )
+    })
+}
+
+/// A preset as a value of its kind, block-independent: what the command line's parser hands to
+/// the engine, and what a diagram's title shows. [`PresetValue::parse`] reads one for a block;
+/// its `Display` is the literal (`S5T#50MS`, `T#500MS`, `4`, `C#5`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PresetValue {
+    /// An S5TIME (TV).
+    S5Time(S5Time),
+    /// A TIME (PT).
+    Time(Time),
+    /// An IEC counter's PV (checked against the counter's type when it is used).
+    Integer(i128),
+    /// An S5 counter's PV.
+    S5Count(CounterPreset),
+}
+
+impl PresetValue {
+    /// The preset `text` of the block of `spec`, read as a preset cell is: the error says
+    /// what the block's preset may be.
+    pub fn parse(spec: BlockSpec, text: &str) -> Result<PresetValue, String> {
+        struct V<'a>(&'a str);
+        impl Visit for V<'_> {
+            type Out = Result<PresetValue, String>;
+            fn visit<F: Adapter>(self, family: F) -> Self::Out {
+                let preset = family.parse_preset(self.0.trim())?;
+                Ok(family.preset_value(preset))
+            }
+        }
+        dispatch(spec, V(text))
+    }
+
+    /// Its kind.
+    pub fn kind(self) -> PresetKind {
+        match self {
+            PresetValue::S5Time(_) => PresetKind::S5Time,
+            PresetValue::Time(_) => PresetKind::Time,
+            PresetValue::Integer(_) => PresetKind::Integer,
+            PresetValue::S5Count(_) => PresetKind::S5Count,
+        }
+    }
+}
+
+impl fmt::Display for PresetValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PresetValue::S5Time(t) => write!(f, "{t}"),
+            PresetValue::Time(t) => write!(f, "{t}"),
+            PresetValue::Integer(i) => write!(f, "{i}"),
+            PresetValue::S5Count(c) => write!(f, "C#{}", c.value()),
+        }
+    }
+}
+
+/// The error of a preset of another kind than `block`'s (a library caller's mistake: the
+/// command line's parser reads the preset for the block).
+fn wrong_kind(block: Block, value: PresetValue) -> String {
+    let p = block.preset();
+    format!(
+        "{value} is not a preset of {block}; its preset {} is {}",
+        p.port.name(),
+        match p.kind {
+            PresetKind::S5Time => "an S5TIME",
+            PresetKind::Time => "a TIME",
+            PresetKind::Integer => "an integer",
+            PresetKind::S5Count => "an S5 count",
+        }
+    )
 }
 
 /// The names of the blocks for which `pick` holds, separated by blanks.
@@ -295,7 +393,7 @@ fn why(rules: &[&'static str], what: impl Into<String>) -> Why {
     }
 }
 
-/// One executed step, as [`Family::explain`] sees it.
+/// One executed step, as [`Adapter::explain`] sees it.
 #[derive(Clone, Copy, Debug)]
 pub struct Step<P, S> {
     /// The CPU time of the step (ms).
@@ -314,8 +412,9 @@ pub struct Step<P, S> {
     pub output: usize,
 }
 
-/// A block family driven through its core interface.
-pub trait Family {
+/// A block family driven through its core interface (the catalog's family of the block is
+/// [`Block::family`]; this is the adapter that drives it).
+pub trait Adapter {
     /// The preset's type (TV, PT, PV).
     type Preset: Copy + PartialEq + fmt::Debug;
     /// The state the core reports.
@@ -326,6 +425,10 @@ pub trait Family {
     fn block(&self) -> Block;
     /// Parses a preset; the error says what is allowed.
     fn parse_preset(&self, text: &str) -> Result<Self::Preset, String>;
+    /// The preset as a [`PresetValue`].
+    fn preset_value(&self, preset: Self::Preset) -> PresetValue;
+    /// The preset given as a [`PresetValue`]; the error says what is allowed.
+    fn preset(&self, value: PresetValue) -> Result<Self::Preset, String>;
     /// The preset in the unit of the block's integer output (PT in ms, TV in units, PV), for
     /// the preset line of a diagram.
     fn preset_mark(&self, preset: Self::Preset) -> i128;
@@ -340,8 +443,9 @@ pub trait Family {
     fn ramp(&self, output: &Self::Output) -> Option<u64>;
     /// The requirement that decides output `step.output` at this step.
     fn explain(&self, step: &Step<Self::Preset, Self::State>) -> Why;
-    /// The catalog inputs the adapter reads, as [`Signals`] bits.
-    fn reads(&self) -> Signals;
+    /// The boolean inputs the adapter reads (of the family: TON has no R, which TONR's adapter
+    /// reads).
+    fn reads(&self) -> &'static [Port];
 }
 
 /// What is done with a family once [`dispatch`] has chosen it.
@@ -349,7 +453,7 @@ pub trait Visit {
     /// The result.
     type Out;
     /// Does it with `family`.
-    fn visit<F: Family>(self, family: F) -> Self::Out;
+    fn visit<F: Adapter>(self, family: F) -> Self::Out;
 }
 
 /// Builds the family adapter of `spec` and hands it to `v`.
@@ -390,7 +494,7 @@ fn is_bool(block: Block, index: usize) -> bool {
     block
         .outputs()
         .get(index)
-        .is_some_and(|p| p.kind == ValueKind::Bool)
+        .is_some_and(|p| p.kind() == ValueKind::Bool)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -401,21 +505,11 @@ pub struct S5Adapter<T> {
     timer: T,
     block: Block,
     kind: S5Kind,
-    s: Pin,
-    r: Pin,
-    fr: Pin,
 }
 
 impl<T: S5TimerOps> S5Adapter<T> {
     fn new(block: Block, kind: S5Kind, timer: T) -> S5Adapter<T> {
-        S5Adapter {
-            timer,
-            block,
-            kind,
-            s: Pin::of(block, "S"),
-            r: Pin::of(block, "R"),
-            fr: Pin::of(block, "FR"),
-        }
+        S5Adapter { timer, block, kind }
     }
 }
 
@@ -430,7 +524,7 @@ fn s5_kind_rule(kind: S5Kind) -> &'static str {
     }
 }
 
-impl<T: S5TimerOps> Family for S5Adapter<T> {
+impl<T: S5TimerOps> Adapter for S5Adapter<T> {
     type Preset = S5Time;
     type State = S5State;
     type Output = S5Output;
@@ -443,14 +537,25 @@ impl<T: S5TimerOps> Family for S5Adapter<T> {
         text.parse::<S5Time>().map_err(|e| e.to_string())
     }
 
+    fn preset_value(&self, tv: S5Time) -> PresetValue {
+        PresetValue::S5Time(tv)
+    }
+
+    fn preset(&self, value: PresetValue) -> Result<S5Time, String> {
+        match value {
+            PresetValue::S5Time(tv) => Ok(tv),
+            other => Err(wrong_kind(self.block, other)),
+        }
+    }
+
     fn preset_mark(&self, tv: S5Time) -> i128 {
         i128::from(tv.units())
     }
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, tv: S5Time) -> S5Output {
-        let input = S5Input::new(signals.get(self.s), signals.get(self.r), tv)
-            .with_fr(signals.get(self.fr));
+        let input = S5Input::new(signals.get(Port::S), signals.get(Port::R), tv)
+            .with_fr(signals.get(Port::Fr));
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
     }
 
@@ -473,16 +578,16 @@ impl<T: S5TimerOps> Family for S5Adapter<T> {
         ))
     }
 
-    fn reads(&self) -> Signals {
-        Signals(self.s.0 | self.r.0 | self.fr.0)
+    fn reads(&self) -> &'static [Port] {
+        &[Port::S, Port::R, Port::Fr]
     }
 
     fn explain(&self, st: &Step<S5Time, S5State>) -> Why {
         let (b, a) = (&st.before, &st.after);
         let (s, r, fr) = (
-            st.signals.get(self.s),
-            st.signals.get(self.r),
-            st.signals.get(self.fr),
+            st.signals.get(Port::S),
+            st.signals.get(Port::R),
+            st.signals.get(Port::Fr),
         );
         let kind = self.kind;
         let kind_rule = s5_kind_rule(kind);
@@ -578,7 +683,7 @@ impl<T: S5TimerOps> Family for S5Adapter<T> {
                 ),
             )
         };
-        if self.block.outputs()[st.output].kind == ValueKind::Word {
+        if self.block.outputs()[st.output].kind() == ValueKind::Word {
             w.rules.push("S5TMR-RANGE-01");
         }
         w
@@ -593,19 +698,11 @@ pub struct IecAdapter<T> {
     timer: T,
     block: Block,
     kind: IecKind,
-    input: Pin,
-    reset: Pin,
 }
 
 impl<T: IecTimerOps<u32>> IecAdapter<T> {
     fn new(block: Block, kind: IecKind, timer: T) -> IecAdapter<T> {
-        IecAdapter {
-            timer,
-            block,
-            kind,
-            input: Pin::of(block, "IN"),
-            reset: Pin::of(block, "R"),
-        }
+        IecAdapter { timer, block, kind }
     }
 }
 
@@ -618,7 +715,7 @@ fn iec_kind_rule(kind: IecKind) -> &'static str {
     }
 }
 
-impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
+impl<T: IecTimerOps<u32>> Adapter for IecAdapter<T> {
     type Preset = Time;
     type State = IecState<u32>;
     type Output = IecOutput<u32>;
@@ -631,13 +728,24 @@ impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
         text.parse::<Time>().map_err(|e| e.to_string())
     }
 
+    fn preset_value(&self, pt: Time) -> PresetValue {
+        PresetValue::Time(pt)
+    }
+
+    fn preset(&self, value: PresetValue) -> Result<Time, String> {
+        match value {
+            PresetValue::Time(pt) => Ok(pt),
+            other => Err(wrong_kind(self.block, other)),
+        }
+    }
+
     fn preset_mark(&self, pt: Time) -> i128 {
         i128::from(pt.clamp_negative())
     }
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, pt: Time) -> IecOutput<u32> {
-        let input = IecInput::new(signals.get(self.input), pt).with_reset(signals.get(self.reset));
+        let input = IecInput::new(signals.get(Port::In), pt).with_reset(signals.get(Port::R));
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
     }
 
@@ -654,15 +762,15 @@ impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
         Some(1)
     }
 
-    fn reads(&self) -> Signals {
-        Signals(self.input.0 | self.reset.0)
+    fn reads(&self) -> &'static [Port] {
+        &[Port::In, Port::R]
     }
 
     fn explain(&self, st: &Step<Time, IecState<u32>>) -> Why {
         let (b, a) = (&st.before, &st.after);
         let kind = self.kind;
-        let input = st.signals.get(self.input);
-        let reset = st.signals.get(self.reset);
+        let input = st.signals.get(Port::In);
+        let reset = st.signals.get(Port::R);
         let pt = st.preset.clamp_negative();
         let gap = st.now.saturating_sub(st.last);
         let rising = input && !b.input;
@@ -784,10 +892,6 @@ pub struct CounterAdapter<N, C> {
     counter: C,
     block: Block,
     kind: CounterKind,
-    cu: Pin,
-    cd: Pin,
-    r: Pin,
-    ld: Pin,
     int: PhantomData<N>,
 }
 
@@ -797,16 +901,22 @@ impl<N: CounterInt, C: CounterOps<N>> CounterAdapter<N, C> {
             counter,
             block,
             kind,
-            cu: Pin::of(block, "CU"),
-            cd: Pin::of(block, "CD"),
-            r: Pin::of(block, "R"),
-            ld: Pin::of(block, "LD"),
             int: PhantomData,
         }
     }
 }
 
-impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
+/// What an IEC counter's PV may be.
+fn int_preset_error<N: CounterInt>() -> String {
+    format!(
+        "not a valid {} preset; PV is a whole number from {} to {}",
+        N::NAME,
+        N::MIN.to_i128(),
+        N::MAX.to_i128()
+    )
+}
+
+impl<N: CounterInt, C: CounterOps<N>> Adapter for CounterAdapter<N, C> {
     type Preset = N;
     type State = CounterState<N>;
     type Output = CounterOutput<N>;
@@ -816,16 +926,19 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
     }
 
     fn parse_preset(&self, text: &str) -> Result<N, String> {
-        let error = || {
-            format!(
-                "not a valid {} preset; PV is a whole number from {} to {}",
-                N::NAME,
-                N::MIN.to_i128(),
-                N::MAX.to_i128()
-            )
-        };
-        let value: i128 = text.trim().parse().map_err(|_| error())?;
-        N::from_i128(value).ok_or_else(error)
+        let value: i128 = text.trim().parse().map_err(|_| int_preset_error::<N>())?;
+        self.preset(PresetValue::Integer(value))
+    }
+
+    fn preset_value(&self, pv: N) -> PresetValue {
+        PresetValue::Integer(pv.to_i128())
+    }
+
+    fn preset(&self, value: PresetValue) -> Result<N, String> {
+        match value {
+            PresetValue::Integer(pv) => N::from_i128(pv).ok_or_else(int_preset_error::<N>),
+            other => Err(wrong_kind(self.block, other)),
+        }
     }
 
     fn preset_mark(&self, pv: N) -> i128 {
@@ -834,13 +947,9 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: N) -> CounterOutput<N> {
-        let input = CounterInput {
-            cu: signals.get(self.cu),
-            cd: signals.get(self.cd),
-            r: signals.get(self.r),
-            ld: signals.get(self.ld),
-            pv,
-        };
+        let input = CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_r(signals.get(Port::R))
+            .with_ld(signals.get(Port::Ld));
         self.counter.call(self.kind, input)
     }
 
@@ -862,14 +971,14 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
         None
     }
 
-    fn reads(&self) -> Signals {
-        Signals(self.cu.0 | self.cd.0 | self.r.0 | self.ld.0)
+    fn reads(&self) -> &'static [Port] {
+        &[Port::Cu, Port::Cd, Port::R, Port::Ld]
     }
 
     fn explain(&self, st: &Step<N, CounterState<N>>) -> Why {
         let (b, a) = (&st.before, &st.after);
         let g = |pin| st.signals.get(pin);
-        let (cu, cd, r, ld) = (g(self.cu), g(self.cd), g(self.r), g(self.ld));
+        let (cu, cd, r, ld) = (g(Port::Cu), g(Port::Cd), g(Port::R), g(Port::Ld));
         let up = cu && !b.cu_prev;
         let down = cd && !b.cd_prev;
         let (bcv, acv, pv) = (b.cv.to_i128(), a.cv.to_i128(), st.preset.to_i128());
@@ -890,7 +999,10 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
         } else if up || down {
             why(
                 &["CNT-EDGE-01"],
-                format!("{} rises: CV {bcv} -> {acv}", if up { "CU" } else { "CD" }),
+                format!(
+                    "{} rises: CV {bcv} -> {acv}",
+                    if up { Port::Cu } else { Port::Cd }.name()
+                ),
             )
         } else {
             why(
@@ -928,11 +1040,6 @@ pub struct S5CounterAdapter<C> {
     counter: C,
     block: Block,
     kind: S5CounterKind,
-    cu: Pin,
-    cd: Pin,
-    s: Pin,
-    r: Pin,
-    fr: Pin,
 }
 
 impl<C: S5CounterOps> S5CounterAdapter<C> {
@@ -941,16 +1048,11 @@ impl<C: S5CounterOps> S5CounterAdapter<C> {
             counter,
             block,
             kind,
-            cu: Pin::of(block, "CU"),
-            cd: Pin::of(block, "CD"),
-            s: Pin::of(block, "S"),
-            r: Pin::of(block, "R"),
-            fr: Pin::of(block, "FR"),
         }
     }
 }
 
-impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
+impl<C: S5CounterOps> Adapter for S5CounterAdapter<C> {
     type Preset = CounterPreset;
     type State = S5CounterState;
     type Output = S5CounterOutput;
@@ -963,21 +1065,27 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
         text.parse::<CounterPreset>().map_err(|e| e.to_string())
     }
 
+    fn preset_value(&self, pv: CounterPreset) -> PresetValue {
+        PresetValue::S5Count(pv)
+    }
+
+    fn preset(&self, value: PresetValue) -> Result<CounterPreset, String> {
+        match value {
+            PresetValue::S5Count(pv) => Ok(pv),
+            other => Err(wrong_kind(self.block, other)),
+        }
+    }
+
     fn preset_mark(&self, pv: CounterPreset) -> i128 {
         i128::from(pv.value())
     }
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: CounterPreset) -> S5CounterOutput {
-        let g = |pin| signals.get(pin);
-        let input = S5CounterInput {
-            cu: g(self.cu),
-            cd: g(self.cd),
-            s: g(self.s),
-            r: g(self.r),
-            fr: g(self.fr),
-            pv,
-        };
+        let input = S5CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_s(signals.get(Port::S))
+            .with_r(signals.get(Port::R))
+            .with_fr(signals.get(Port::Fr));
         self.counter.call(self.kind, input)
     }
 
@@ -998,14 +1106,20 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
         None
     }
 
-    fn reads(&self) -> Signals {
-        Signals(self.cu.0 | self.cd.0 | self.s.0 | self.r.0 | self.fr.0)
+    fn reads(&self) -> &'static [Port] {
+        &[Port::Cu, Port::Cd, Port::S, Port::R, Port::Fr]
     }
 
     fn explain(&self, st: &Step<CounterPreset, S5CounterState>) -> Why {
         let (b, a) = (&st.before, &st.after);
         let g = |pin| st.signals.get(pin);
-        let (cu, cd, s, r, fr) = (g(self.cu), g(self.cd), g(self.s), g(self.r), g(self.fr));
+        let (cu, cd, s, r, fr) = (
+            g(Port::Cu),
+            g(Port::Cd),
+            g(Port::S),
+            g(Port::R),
+            g(Port::Fr),
+        );
         let fr_edge = fr && !b.fr_prev;
         // An FR edge clears the edge memories before the operations see them.
         let memory = |m: bool| m && !fr_edge;
@@ -1050,7 +1164,7 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
                 &["SC-EDGE-01"],
                 format!(
                     "{} rises: CV {} -> {}",
-                    if up { "CU" } else { "CD" },
+                    if up { Port::Cu } else { Port::Cd }.name(),
                     b.cv,
                     a.cv
                 ),
@@ -1061,7 +1175,7 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
                 "no rising CU, CD or S (a level held at 1 acts once): CV unchanged",
             )
         };
-        let (rule, what) = match self.block.outputs()[st.output].kind {
+        let (rule, what) = match self.block.outputs()[st.output].kind() {
             ValueKind::Bool => ("SC-Q-01", format!("Q = CV != 0 with CV = {}", a.cv)),
             ValueKind::Word => ("SC-RANGE-01", format!("CV_BCD is CV = {} in BCD", a.cv)),
             _ => return cv,
@@ -1081,7 +1195,6 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use plc_timers::catalog::Port;
 
     /// `with` chooses the implementation and keeps the block and type.
     #[test]
@@ -1097,35 +1210,37 @@ mod tests {
     /// Records what a visit saw.
     struct Probe;
     impl Visit for Probe {
-        type Out = (Block, Vec<Value>, Vec<bool>);
-        fn visit<F: Family>(self, mut f: F) -> Self::Out {
+        type Out = (Block, Vec<Value>, &'static [Port], PresetValue);
+        fn visit<F: Adapter>(self, mut f: F) -> Self::Out {
             let block = f.block();
-            let preset = match block.preset().map(|p| p.kind) {
-                Some(plc_timers::catalog::PresetKind::S5Time) => "S5T#10MS",
-                Some(plc_timers::catalog::PresetKind::Time) => "T#10MS",
-                _ => "1",
+            let text = match block.preset().kind {
+                PresetKind::S5Time => "S5T#10MS",
+                PresetKind::Time => "T#10MS",
+                PresetKind::Integer | PresetKind::S5Count => "1",
             };
-            let p = f.parse_preset(preset).expect("a valid preset");
-            let out = f.call(0, Signals(0), p);
-            // Which catalog inputs the adapter reads.
-            let reads = f.reads().0;
-            let used = block
-                .inputs()
-                .iter()
-                .enumerate()
-                .map(|(i, port)| (port.kind == ValueKind::Bool) == (reads >> i & 1 == 1))
-                .collect();
-            (block, f.values(&out).as_slice().to_vec(), used)
+            let p = f.parse_preset(text).expect("a valid preset");
+            assert_eq!(
+                f.preset(f.preset_value(p)),
+                Ok(p),
+                "{block}: the value round-trips"
+            );
+            let out = f.call(0, Signals::NONE, p);
+            (
+                block,
+                f.values(&out).as_slice().to_vec(),
+                f.reads(),
+                f.preset_value(p),
+            )
         }
     }
 
     /// Every block's adapter gives as many outputs as the catalog lists, of the catalog's kinds,
-    /// and resolves every boolean input the catalog lists.
+    /// reads every boolean input the catalog lists, and reads presets of the catalog's kind.
     #[test]
     fn adapters_follow_the_catalog() {
         for block in Block::ALL {
             for imp in [Implementation::Reference, Implementation::Optimized] {
-                let (b, values, used) = dispatch(BlockSpec::new(block).with(imp), Probe);
+                let (b, values, reads, preset) = dispatch(BlockSpec::new(block).with(imp), Probe);
                 assert_eq!(b, block);
                 let kinds: Vec<ValueKind> = values
                     .iter()
@@ -1135,16 +1250,53 @@ mod tests {
                         Value::Word(_) => ValueKind::Word,
                     })
                     .collect();
-                let catalog: Vec<ValueKind> =
-                    block.outputs().iter().map(|p: &Port| p.kind).collect();
+                let catalog: Vec<ValueKind> = block.outputs().iter().map(|p| p.kind()).collect();
                 assert_eq!(kinds, catalog, "{block}");
-                assert!(
-                    used.iter().all(|u| *u),
-                    "{block}: the adapter reads exactly the boolean inputs"
-                );
+                for port in block.inputs() {
+                    assert_eq!(
+                        port.kind() == ValueKind::Bool,
+                        reads.contains(port),
+                        "{block}: the adapter reads {port:?} exactly when it is a boolean input"
+                    );
+                }
+                assert!(reads.iter().all(|p| p.kind() == ValueKind::Bool));
+                assert_eq!(preset.kind(), block.preset().kind, "{block}");
                 assert!(block.outputs().len() <= MAX_OUTPUTS);
             }
         }
+    }
+
+    /// A preset reads as the block's preset cell does, and prints as its literal; another
+    /// kind's preset is refused with the block's.
+    #[test]
+    fn preset_values() {
+        let spec = |b| BlockSpec::new(b);
+        let tv = PresetValue::parse(spec(Block::SOffdt), "S5T#50ms").expect("a TV");
+        assert_eq!(tv.to_string(), "S5T#50MS");
+        let pt = PresetValue::parse(spec(Block::Ton), " T#500ms ").expect("a PT");
+        assert_eq!(pt.to_string(), "T#500MS");
+        assert_eq!(
+            PresetValue::parse(spec(Block::Ctu), "4"),
+            Ok(PresetValue::Integer(4))
+        );
+        assert_eq!(
+            PresetValue::parse(spec(Block::SCu), "5").map(|v| v.to_string()),
+            Ok("C#5".to_string())
+        );
+        let e = PresetValue::parse(spec(Block::Ctu), "40000").expect_err("beyond INT");
+        assert!(e.contains("from -32768 to 32767"), "{e}");
+        struct Convert(PresetValue);
+        impl Visit for Convert {
+            type Out = Result<(), String>;
+            fn visit<F: Adapter>(self, f: F) -> Self::Out {
+                f.preset(self.0).map(|_| ())
+            }
+        }
+        let e = dispatch(spec(Block::Ton), Convert(tv)).expect_err("a TV is not a PT");
+        assert_eq!(
+            e,
+            "S5T#50MS is not a preset of TON; its preset PT is a TIME"
+        );
     }
 
     #[test]

@@ -20,7 +20,8 @@ pub mod vectors;
 
 pub use engine::{
     check, observe, run, CheckReport, Columns, ContextRow, Difference, Observation, Observer,
-    PresetOption,
 };
 pub use error::{Error, Location, TraceError};
-pub use family::{dispatch, BlockSpec, Implementation, IntType, Signals, Value, Why};
+pub use family::{
+    dispatch, parse_block, BlockSpec, Implementation, IntType, PresetValue, Signals, Value, Why,
+};

@@ -4,12 +4,12 @@
 
 use std::io::{Read, Write};
 
-use plc_timers::catalog::ValueKind;
+use plc_timers::catalog::{Port, ValueKind};
 use vcd::{IdCode, TimescaleUnit, VarType};
 
-use super::engine::{observe, Columns, Observation, Observer, PresetOption};
+use super::engine::{observe, Columns, Observation, Observer};
 use super::error::Error;
-use super::family::{BlockSpec, Value};
+use super::family::{BlockSpec, PresetValue, Value};
 
 /// The width of integer signals (ET, BI, CV, the preset): 64 bits, two's complement.
 pub const INT_BITS: u32 = 64;
@@ -24,7 +24,7 @@ struct Signal {
 
 #[derive(Clone, Copy)]
 enum Source {
-    Input(u32),
+    Input(Port),
     Output(usize),
     Preset,
 }
@@ -51,17 +51,22 @@ impl<W: Write> Observer for VcdObserver<W> {
         let w = &mut self.writer;
         w.timescale(1, TimescaleUnit::MS)?;
         w.add_module(&columns.block.name().to_ascii_lowercase())?;
-        for &(name, bit) in &columns.inputs {
-            let id = w.add_wire(1, name)?;
+        for &port in &columns.inputs {
+            let id = w.add_wire(1, port.name())?;
             self.signals.push(Signal {
                 id,
                 kind: ValueKind::Bool,
-                source: Source::Input(bit),
+                source: Source::Input(port),
                 last: None,
             });
         }
-        if let Some(preset) = columns.block.preset() {
-            let id = w.add_var(VarType::Integer, INT_BITS, preset.name, None)?;
+        {
+            let id = w.add_var(
+                VarType::Integer,
+                INT_BITS,
+                columns.block.preset().port.name(),
+                None,
+            )?;
             self.signals.push(Signal {
                 id,
                 kind: ValueKind::Int,
@@ -70,14 +75,14 @@ impl<W: Write> Observer for VcdObserver<W> {
             });
         }
         for (i, port) in columns.block.outputs().iter().enumerate() {
-            let id = match port.kind {
-                ValueKind::Bool => w.add_wire(1, port.name)?,
-                ValueKind::Word => w.add_var(VarType::Reg, 16, port.name, None)?,
-                _ => w.add_var(VarType::Integer, INT_BITS, port.name, None)?,
+            let id = match port.kind() {
+                ValueKind::Bool => w.add_wire(1, port.name())?,
+                ValueKind::Word => w.add_var(VarType::Reg, 16, port.name(), None)?,
+                _ => w.add_var(VarType::Integer, INT_BITS, port.name(), None)?,
             };
             self.signals.push(Signal {
                 id,
-                kind: port.kind,
+                kind: port.kind(),
                 source: Source::Output(i),
                 last: None,
             });
@@ -95,7 +100,7 @@ impl<W: Write> Observer for VcdObserver<W> {
         }
         for s in &mut self.signals {
             let v = match s.source {
-                Source::Input(bit) => i128::from(o.signals.0 & bit != 0),
+                Source::Input(port) => i128::from(o.signals.get(port)),
                 Source::Preset => o.preset,
                 Source::Output(i) => match o.outputs.as_slice()[i] {
                     Value::Bool(b) => i128::from(b),
@@ -121,7 +126,7 @@ impl<W: Write> Observer for VcdObserver<W> {
 /// The time unit is 1 ms; a trace without `t_ms` uses the row index. Returns the rows written.
 pub fn export<R: Read, W: Write>(
     spec: BlockSpec,
-    presets: &[PresetOption<'_>],
+    preset: Option<PresetValue>,
     input: R,
     out: W,
 ) -> Result<u64, Error> {
@@ -131,7 +136,7 @@ pub fn export<R: Read, W: Write>(
         time: None,
         rows: 0,
     };
-    observe(spec, presets, input, &mut o)?;
+    observe(spec, preset, input, &mut o)?;
     o.writer.flush()?;
     Ok(o.rows)
 }

@@ -17,12 +17,13 @@
 //!   counters: CV 0, 5 and 999).
 //! - `fr.csv` (blocks with FR): FR edges with S (or CU, CD) high and low, running and stopped.
 
+use plc_timers::catalog::Port::{self, Cd, Cu, Fr, In, Ld, R, S};
 use plc_timers::catalog::{Block, Family, PresetKind, ValueKind};
 
 use super::engine::{run, TIME_COLUMN};
 use super::error::TraceError;
 use super::examples;
-use super::family::{input_bit, BlockSpec, IntType};
+use super::family::{BlockSpec, IntType, Signals};
 
 /// Random traces per block (besides the example and the aimed traces).
 pub const TRACES_PER_BLOCK: usize = 20;
@@ -58,10 +59,10 @@ impl Vector {
     }
 }
 
-/// A trace under construction: rows of (t, input bits, preset text).
+/// A trace under construction: rows of (t, the inputs at 1, preset text).
 struct Trace {
     block: Block,
-    rows: Vec<(u64, u32, String)>,
+    rows: Vec<(u64, Signals, String)>,
 }
 
 impl Trace {
@@ -72,10 +73,9 @@ impl Trace {
         }
     }
 
-    /// Adds a row with the inputs `names` at 1.
-    fn row(&mut self, t: u64, names: &[&str], preset: &str) {
-        let bits = names.iter().fold(0, |b, n| b | input_bit(self.block, n));
-        self.rows.push((t, bits, preset.to_string()));
+    /// Adds a row with the inputs `on` at 1 (those the block has; the others are not columns).
+    fn row(&mut self, t: u64, on: &[Port], preset: &str) {
+        self.rows.push((t, Signals::of(on), preset.to_string()));
     }
 
     fn text(&self) -> String {
@@ -84,17 +84,17 @@ impl Trace {
         if timed {
             names.push(TIME_COLUMN);
         }
-        names.extend(self.block.inputs().iter().map(|p| p.name));
+        names.extend(self.block.inputs().iter().map(|p| p.name()));
         let mut text = names.join(",");
         text.push('\n');
-        for (t, bits, preset) in &self.rows {
+        for (t, on, preset) in &self.rows {
             let mut fields: Vec<String> = Vec::new();
             if timed {
                 fields.push(t.to_string());
             }
-            for (i, port) in self.block.inputs().iter().enumerate() {
-                fields.push(match port.kind {
-                    ValueKind::Bool => u8::from(bits >> i & 1 == 1).to_string(),
+            for &port in self.block.inputs() {
+                fields.push(match port.kind() {
+                    ValueKind::Bool => u8::from(on.get(port)).to_string(),
                     _ => preset.clone(),
                 });
             }
@@ -158,12 +158,13 @@ fn random(block: Block, kind: PresetKind, int_type: IntType, rng: &mut fastrand:
     for _ in 0..ROWS {
         t += steps[rng.usize(..steps.len())];
         bits ^= rng.u64(..) & rng.u64(..);
-        let mut on: Vec<&str> = Vec::new();
-        for (i, port) in block.inputs().iter().enumerate() {
+        let mut on: Vec<Port> = Vec::new();
+        for (i, &port) in block.inputs().iter().enumerate() {
             // Resets, loads and enables are rarer than the counting and start signals.
-            let rare = matches!(port.name, "R" | "LD" | "FR");
-            if port.kind == ValueKind::Bool && bits >> i & 1 == 1 && (!rare || rng.u32(..3) == 0) {
-                on.push(port.name);
+            let rare = matches!(port, R | Ld | Fr);
+            if port.kind() == ValueKind::Bool && bits >> i & 1 == 1 && (!rare || rng.u32(..3) == 0)
+            {
+                on.push(port);
             }
         }
         trace.row(t, &on, &preset);
@@ -186,11 +187,7 @@ fn preset_change(block: Block, kind: PresetKind) -> Trace {
     let mut trace = Trace::new(block);
     if block.requires_time() {
         // The start input: S or IN; TONR's R resets at the end.
-        let start = if block.input_index("S").is_some() {
-            "S"
-        } else {
-            "IN"
-        };
+        let start = if block.has_input(S) { S } else { In };
         let t0 = start_time(kind);
         let pattern: &[(u64, bool, usize)] = &[
             (0, false, 0),
@@ -220,25 +217,25 @@ fn preset_change(block: Block, kind: PresetKind) -> Trace {
         for &(dt, on, k) in pattern {
             trace.row(t0 + dt, if on { &started[..] } else { &[] }, p[k]);
         }
-        trace.row(t0 + 800, &["R"], p[0]);
+        trace.row(t0 + 800, &[R], p[0]);
     } else {
-        let pattern: &[(&[&str], usize)] = &[
-            (&["LD", "S"], 0),
+        let pattern: &[(&[Port], usize)] = &[
+            (&[Ld, S], 0),
             (&[], 0),
-            (&["CU"], 0),
+            (&[Cu], 0),
             (&[], 0),
-            (&["CU"], 0),
+            (&[Cu], 0),
             (&[], 1),
-            (&["CD"], 1),
+            (&[Cd], 1),
             (&[], 2),
-            (&["CU"], 2),
+            (&[Cu], 2),
             (&[], 2),
-            (&["LD", "S"], 2),
+            (&[Ld, S], 2),
             (&[], 3),
-            (&["CD"], 3),
+            (&[Cd], 3),
             (&[], 3),
-            (&["CU"], 0),
-            (&["R"], 0),
+            (&[Cu], 0),
+            (&[R], 0),
             (&[], 1),
         ];
         for (t, &(on, k)) in pattern.iter().enumerate() {
@@ -262,11 +259,11 @@ fn long_gaps(block: Block) -> Trace {
             (1 << 32) + (1 << 31),
         ] {
             trace.row(t, &[], pt);
-            trace.row(t + 1, &["IN"], pt);
-            trace.row(t + 1 + gap, &["IN"], pt);
+            trace.row(t + 1, &[In], pt);
+            trace.row(t + 1 + gap, &[In], pt);
             trace.row(t + 2 + gap, &[], pt);
             trace.row(t + 2 + 2 * gap, &[], pt);
-            trace.row(t + 3 + 2 * gap, &["R"], pt);
+            trace.row(t + 3 + 2 * gap, &[R], pt);
             t += 5 + 2 * gap;
         }
     }
@@ -275,37 +272,36 @@ fn long_gaps(block: Block) -> Trace {
 
 /// Rows that bring a counter to a known CV: (inputs, preset) pairs, each followed by a row
 /// with every input 0.
-fn setups(block: Block, int_type: IntType) -> Vec<(Vec<&'static str>, String)> {
-    let has = |n: &str| block.input_index(n).is_some();
+fn setups(block: Block, int_type: IntType) -> Vec<(Vec<Port>, String)> {
     match block.family() {
         Family::IecCounter => {
             let (min, max) = int_type.limits();
             let mut v = Vec::new();
-            if has("R") {
-                v.push((vec!["R"], "3".to_string()));
+            if block.has_input(R) {
+                v.push((vec![R], "3".to_string()));
             }
-            if has("LD") {
+            if block.has_input(Ld) {
                 for cv in [max, min, 0, 3] {
-                    v.push((vec!["LD"], cv.to_string()));
+                    v.push((vec![Ld], cv.to_string()));
                 }
             }
             v
         }
         Family::S5Counter => vec![
-            (vec!["R"], "C#5".to_string()),
-            (vec!["S"], "C#999".to_string()),
-            (vec!["S"], "C#5".to_string()),
+            (vec![R], "C#5".to_string()),
+            (vec![S], "C#999".to_string()),
+            (vec![S], "C#5".to_string()),
         ],
         _ => vec![(vec![], String::new())],
     }
 }
 
 fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
-    let bools: Vec<&'static str> = block
+    let bools: Vec<Port> = block
         .inputs()
         .iter()
-        .filter(|p| p.kind == ValueKind::Bool)
-        .map(|p| p.name)
+        .copied()
+        .filter(|p| p.kind() == ValueKind::Bool)
         .collect();
     let timer_preset = changing_presets(kind)[2];
     let mut trace = Trace::new(block);
@@ -317,7 +313,7 @@ fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
             preset
         };
         for combo in 0u32..1 << bools.len() {
-            let on: Vec<&str> = (0..bools.len())
+            let on: Vec<Port> = (0..bools.len())
                 .filter(|i| combo >> i & 1 == 1)
                 .map(|i| bools[i])
                 .collect();
@@ -335,16 +331,11 @@ fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
 fn limits(block: Block, int_type: IntType) -> Trace {
     let mut trace = Trace::new(block);
     // Counters only: their traces have no time column, so every row's time is 0.
-    let mut row = |on: &[&str], preset: &str| trace.row(0, on, preset);
+    let mut row = |on: &[Port], preset: &str| trace.row(0, on, preset);
     match block.family() {
         Family::S5Counter => {
-            for (set, count) in [
-                ("C#999", "CU"),
-                ("C#998", "CU"),
-                ("C#1", "CD"),
-                ("C#0", "CD"),
-            ] {
-                row(&["S"], set);
+            for (set, count) in [("C#999", Cu), ("C#998", Cu), ("C#1", Cd), ("C#0", Cd)] {
+                row(&[S], set);
                 row(&[], set);
                 for _ in 0..3 {
                     row(&[count], set);
@@ -354,24 +345,24 @@ fn limits(block: Block, int_type: IntType) -> Trace {
         }
         _ => {
             let (min, max) = int_type.limits();
-            for (load, count) in [(max - 1, "CU"), (max, "CU"), (min + 1, "CD"), (min, "CD")] {
+            for (load, count) in [(max - 1, Cu), (max, Cu), (min + 1, Cd), (min, Cd)] {
                 let pv = load.to_string();
-                row(&["LD"], &pv);
+                row(&[Ld], &pv);
                 row(&[], &pv);
                 for _ in 0..3 {
                     row(&[count], &pv);
                     row(&[], &pv);
                 }
-                row(&["CU", "CD"], &pv);
+                row(&[Cu, Cd], &pv);
                 row(&[], &pv);
             }
             // Without a load input, the top is reached by counting (8-bit types only).
-            if block.input_index("LD").is_none() && max <= 255 {
+            if !block.has_input(Ld) && max <= 255 {
                 let pv = max.to_string();
-                row(&["R"], &pv);
+                row(&[R], &pv);
                 row(&[], &pv);
                 for _ in 0..=max + 2 {
-                    row(&["CU"], &pv);
+                    row(&[Cu], &pv);
                     row(&[], &pv);
                 }
             }
@@ -384,53 +375,53 @@ fn fr(block: Block, kind: PresetKind) -> Trace {
     let mut trace = Trace::new(block);
     let preset = changing_presets(kind)[1];
     if block.requires_time() {
-        let pattern: &[(u64, &[&str])] = &[
+        let pattern: &[(u64, &[Port])] = &[
             (0, &[]),
-            (10, &["S"]),
-            (20, &["S", "FR"]),
-            (30, &["S", "FR"]),
-            (40, &["S"]),
-            (50, &["S", "FR"]),
-            (100, &["S"]),
-            (150, &["S"]),
-            (160, &["S", "FR"]),
-            (170, &["FR"]),
+            (10, &[S]),
+            (20, &[S, Fr]),
+            (30, &[S, Fr]),
+            (40, &[S]),
+            (50, &[S, Fr]),
+            (100, &[S]),
+            (150, &[S]),
+            (160, &[S, Fr]),
+            (170, &[Fr]),
             (180, &[]),
-            (190, &["FR"]),
-            (200, &["S", "FR"]),
-            (210, &["FR"]),
+            (190, &[Fr]),
+            (200, &[S, Fr]),
+            (210, &[Fr]),
             (230, &[]),
-            (240, &["FR"]),
+            (240, &[Fr]),
             (300, &[]),
-            (310, &["S"]),
-            (320, &["S", "R", "FR"]),
-            (330, &["S"]),
-            (340, &["S", "FR"]),
+            (310, &[S]),
+            (320, &[S, R, Fr]),
+            (330, &[S]),
+            (340, &[S, Fr]),
             (400, &[]),
-            (410, &["FR"]),
+            (410, &[Fr]),
             (420, &[]),
         ];
         for &(t, on) in pattern {
             trace.row(t, on, preset);
         }
     } else {
-        for input in ["CU", "CD", "S"] {
-            if block.input_index(input).is_none() {
+        for input in [Cu, Cd, S] {
+            if !block.has_input(input) {
                 continue;
             }
-            let pattern: &[&[&str]] = &[
+            let pattern: &[&[Port]] = &[
                 &[input],
-                &[input, "FR"],
-                &[input, "FR"],
+                &[input, Fr],
+                &[input, Fr],
                 &[input],
-                &[input, "FR"],
-                &["FR"],
+                &[input, Fr],
+                &[Fr],
                 &[],
-                &["FR"],
-                &[input, "FR"],
-                &[input, "R", "FR"],
+                &[Fr],
+                &[input, Fr],
+                &[input, R, Fr],
                 &[input],
-                &[input, "FR"],
+                &[input, Fr],
                 &[],
             ];
             for on in pattern {
@@ -444,7 +435,7 @@ fn fr(block: Block, kind: PresetKind) -> Trace {
 /// The reference's output for `text`.
 fn reference(spec: BlockSpec, text: &str) -> Result<String, TraceError> {
     let mut out = Vec::new();
-    run(spec, &[], text.as_bytes(), &mut out).map_err(|e| match e {
+    run(spec, None, text.as_bytes(), &mut out).map_err(|e| match e {
         super::error::Error::Input(e) => e,
         super::error::Error::Output(e) => {
             TraceError::new(super::error::Location::Command, e.to_string())
@@ -456,8 +447,8 @@ fn reference(spec: BlockSpec, text: &str) -> Result<String, TraceError> {
 /// The example trace of `block` with its preset as a column (comments and blank lines dropped).
 fn example_with_preset(block: Block) -> Option<String> {
     let example = examples::of(block)?;
-    let (_, value) = example.preset?;
-    let preset = block.preset()?.name;
+    let value = example.preset_text?;
+    let preset = block.preset().port.name();
     let mut text = String::new();
     for line in example
         .text
@@ -472,9 +463,7 @@ fn example_with_preset(block: Block) -> Option<String> {
 
 fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> {
     let block = spec.block;
-    let Some(kind) = block.preset().map(|p| p.kind) else {
-        return Ok(Vec::new());
-    };
+    let kind = block.preset().kind;
     let dir = match block.family() {
         Family::IecCounter => format!("{block}-{}", spec.int_type.name()),
         _ => block.name().to_string(),
@@ -506,7 +495,7 @@ fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> 
         "simultaneous.csv".into(),
         simultaneous(block, kind, spec.int_type).text(),
     ));
-    if block.input_index("FR").is_some() {
+    if block.has_input(Fr) {
         traces.push(("fr.csv".into(), fr(block, kind).text()));
     }
     traces
@@ -545,7 +534,7 @@ pub fn all() -> Result<Vec<Vector>, TraceError> {
 pub fn readme() -> String {
     let mut outputs = String::new();
     for block in Block::ALL {
-        let names: Vec<&str> = block.outputs().iter().map(|p| p.name).collect();
+        let names: Vec<&str> = block.outputs().iter().map(|p| p.name()).collect();
         outputs.push_str(&format!("  {:<8} {}\n", block.name(), names.join(",")));
     }
     format!(
