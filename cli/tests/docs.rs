@@ -576,3 +576,49 @@ fn vcd_agrees_with_run() {
         );
     }
 }
+
+/// CLI-DIAG-01: the title gives the preset as its literal, and says when the trace's column
+/// gives it; a preset that changes is named, not valued.
+#[test]
+fn title_shows_the_preset_literal() {
+    let title = |svg: &str| -> String {
+        let start = svg.find("font-weight=\"bold\">").expect("a title") + 19;
+        svg[start..start + svg[start..].find('<').expect("end")].to_string()
+    };
+    let ton = BlockSpec::new(Block::Ton);
+    let (svg, _) = draw(
+        ton,
+        preset(Block::Ton, "T#500ms"),
+        b"t_ms,IN\n0,1\n600,1\n",
+        Window::default(),
+    );
+    assert_eq!(title(&svg), "TON, PT = T#500MS");
+    let (svg, _) = draw(
+        ton,
+        None,
+        b"t_ms,IN,PT\n0,1,500\n600,1,T#500MS\n",
+        Window::default(),
+    );
+    assert_eq!(title(&svg), "TON, PT = T#500MS (from the trace)");
+    let (svg, _) = draw(
+        ton,
+        None,
+        b"t_ms,IN,PT\n0,1,500\n600,1,T#1S\n",
+        Window::default(),
+    );
+    assert_eq!(title(&svg), "TON, PT changes (from the trace)");
+    let (svg, _) = draw(
+        BlockSpec::new(Block::SOffdt),
+        preset(Block::SOffdt, "W#16#1005"),
+        b"t_ms,S\n0,1\n10,0\n",
+        Window::default(),
+    );
+    assert_eq!(title(&svg), "S_OFFDT, TV = S5T#500MS");
+    let (svg, _) = draw(
+        BlockSpec::new(Block::Ctu),
+        preset(Block::Ctu, "4"),
+        b"CU\n1\n0\n",
+        Window::default(),
+    );
+    assert_eq!(title(&svg), "CTU, PV = 4");
+}

@@ -17,7 +17,7 @@ fuzz_target!(|data: &[u8]| {
     } else {
         None
     };
-    if let Ok(report) = check(BlockSpec::new(block), &[], outputs, csv) {
+    if let Ok(report) = check(BlockSpec::new(block), None, outputs, csv) {
         assert!(!report.compared.is_empty());
         if let Some(d) = report.difference {
             assert!(d.why.rules.iter().all(|id| rules::rule(id).is_some()));

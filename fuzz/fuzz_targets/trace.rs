@@ -4,21 +4,22 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use plc_timers::catalog::Block;
-use plc_timers_cli::trace::{check, run, BlockSpec, Error, Implementation};
+use plc_timers::catalog::{Block, PresetKind};
+use plc_timers_cli::trace::{check, run, BlockSpec, Error, Implementation, PresetValue};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&selector, csv)) = data.split_first() else {
         return;
     };
     let block = Block::ALL[usize::from(selector) % Block::ALL.len()];
-    let preset: &[(&str, &str)] = match block.preset().map(|p| p.option) {
-        Some("tv") => &[("tv", "S5T#30MS")],
-        Some("pt") => &[("pt", "T#20ms")],
-        _ if selector & 0x80 != 0 => &[("pv", "3")],
-        _ => &[],
-    };
     let spec = BlockSpec::new(block);
+    let text = match block.preset().kind {
+        PresetKind::S5Time => Some("S5T#30MS"),
+        PresetKind::Time => Some("T#20ms"),
+        _ if selector & 0x80 != 0 => Some("3"),
+        _ => None,
+    };
+    let preset = text.map(|t| PresetValue::parse(spec, t).expect("a valid preset"));
     let mut results = Vec::new();
     for implementation in [Implementation::Reference, Implementation::Optimized] {
         let mut out = Vec::new();

@@ -355,6 +355,28 @@ fn wrong_kind(block: Block, value: PresetValue) -> String {
     )
 }
 
+/// [`Adapter::parse_preset`], [`Adapter::preset_value`] and [`Adapter::preset`] of an adapter
+/// whose preset parses with its `FromStr` and is carried as is by the [`PresetValue`] variant
+/// `$variant`.
+macro_rules! preset_conversions {
+    ($variant:ident, $preset:ty) => {
+        fn parse_preset(&self, text: &str) -> Result<$preset, String> {
+            text.parse::<$preset>().map_err(|e| e.to_string())
+        }
+
+        fn preset_value(&self, preset: $preset) -> PresetValue {
+            PresetValue::$variant(preset)
+        }
+
+        fn preset(&self, value: PresetValue) -> Result<$preset, String> {
+            match value {
+                PresetValue::$variant(preset) => Ok(preset),
+                other => Err(wrong_kind(self.block, other)),
+            }
+        }
+    };
+}
+
 /// The names of the blocks for which `pick` holds, separated by blanks.
 pub fn names_of(pick: impl Fn(Block) -> bool) -> String {
     let names: Vec<&str> = Block::ALL
@@ -533,20 +555,7 @@ impl<T: S5TimerOps> Adapter for S5Adapter<T> {
         self.block
     }
 
-    fn parse_preset(&self, text: &str) -> Result<S5Time, String> {
-        text.parse::<S5Time>().map_err(|e| e.to_string())
-    }
-
-    fn preset_value(&self, tv: S5Time) -> PresetValue {
-        PresetValue::S5Time(tv)
-    }
-
-    fn preset(&self, value: PresetValue) -> Result<S5Time, String> {
-        match value {
-            PresetValue::S5Time(tv) => Ok(tv),
-            other => Err(wrong_kind(self.block, other)),
-        }
-    }
+    preset_conversions!(S5Time, S5Time);
 
     fn preset_mark(&self, tv: S5Time) -> i128 {
         i128::from(tv.units())
@@ -724,20 +733,7 @@ impl<T: IecTimerOps<u32>> Adapter for IecAdapter<T> {
         self.block
     }
 
-    fn parse_preset(&self, text: &str) -> Result<Time, String> {
-        text.parse::<Time>().map_err(|e| e.to_string())
-    }
-
-    fn preset_value(&self, pt: Time) -> PresetValue {
-        PresetValue::Time(pt)
-    }
-
-    fn preset(&self, value: PresetValue) -> Result<Time, String> {
-        match value {
-            PresetValue::Time(pt) => Ok(pt),
-            other => Err(wrong_kind(self.block, other)),
-        }
-    }
+    preset_conversions!(Time, Time);
 
     fn preset_mark(&self, pt: Time) -> i128 {
         i128::from(pt.clamp_negative())
@@ -1061,20 +1057,7 @@ impl<C: S5CounterOps> Adapter for S5CounterAdapter<C> {
         self.block
     }
 
-    fn parse_preset(&self, text: &str) -> Result<CounterPreset, String> {
-        text.parse::<CounterPreset>().map_err(|e| e.to_string())
-    }
-
-    fn preset_value(&self, pv: CounterPreset) -> PresetValue {
-        PresetValue::S5Count(pv)
-    }
-
-    fn preset(&self, value: PresetValue) -> Result<CounterPreset, String> {
-        match value {
-            PresetValue::S5Count(pv) => Ok(pv),
-            other => Err(wrong_kind(self.block, other)),
-        }
-    }
+    preset_conversions!(S5Count, CounterPreset);
 
     fn preset_mark(&self, pv: CounterPreset) -> i128 {
         i128::from(pv.value())
