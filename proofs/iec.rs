@@ -213,7 +213,7 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     true
 }
 
-/// Seed 001 Table 8-20, all kinds: while a timer runs, a change of PT has no effect (the call
+/// S7-1200 manual, Table 8-20, all kinds: while a timer runs, a change of PT has no effect (the call
 /// gives the same result whatever PT is: IEC-PT-LATCH-01); TP ignores IN while running
 /// (TP-IN-01); TON resets and stops on IN = 0 (TON-IN-01); TOF resets and stops on IN = 1
 /// (TOF-IN-01); TONR stops without reset on IN = 0 (TONR-IN-01).

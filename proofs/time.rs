@@ -390,7 +390,7 @@ fn exhaustive_s5_literal_components_small() {
             }
         }
     }
-    // Seed 000 Table 9-2's maximum, spelled as in the manual.
+    // LAD manual §9.1, Table 9-2's maximum, spelled as in the manual.
     prop_s5_literal_components([Some(2), Some(46), Some(30), None], true, false);
 }
 

@@ -44,7 +44,7 @@ fn dt_strategy() -> impl Strategy<Value = u64> {
     ]
 }
 
-/// TVs: value 0 (seed 003), one unit, small values (which expire within a trace), 999, any.
+/// TVs: value 0 (Berger §7.1), one unit, small values (which expire within a trace), 999, any.
 fn tv_strategy() -> impl Strategy<Value = S5Time> {
     let units = prop_oneof![
         2 => Just(0u16),

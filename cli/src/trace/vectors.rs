@@ -16,6 +16,9 @@
 //!   together, from several states (counters: CV 0, at the type's limits and at PV; S5
 //!   counters: CV 0, 5 and 999).
 //! - `fr.csv` (blocks with FR): FR edges with S (or CU, CD) high and low, running and stopped.
+//! - `decisions.csv` (every timer, the IEC counters): one block of rows per decision of `spec/`
+//!   that departs from, or chooses between readings of, a manual's wording, or where a peer
+//!   runtime differs (`spec/s5.md` "Departures weighed", `spec/iec.md`, `spec/counter.md`).
 
 use plc_timers::catalog::Port::{self, Cd, Cu, Fr, In, Ld, R, S};
 use plc_timers::catalog::{Block, Family, PresetKind, ValueKind};
@@ -432,6 +435,169 @@ fn fr(block: Block, kind: PresetKind) -> Trace {
     trace
 }
 
+/// The rows that pin the weighed decisions of `spec/` (see the module documentation); `None`
+/// for the S5 counters, whose decisions the other aimed traces already pin.
+fn decisions(block: Block) -> Option<Trace> {
+    let mut trace = Trace::new(block);
+    // (t_ms, inputs at 1, preset)
+    let mut rows = |rows: &[(u64, &[&str], &str)]| {
+        for &(t, on, preset) in rows {
+            trace.row(t, on, preset);
+        }
+    };
+    const TV: &str = "S5T#100MS"; // 10 units of the 10 ms base
+    match block {
+        Block::SPulse => rows(&[
+            // S5TMR-R-01 (s5.md D3): R on a timer stopped by S clears the kept value: BI 6 -> 0.
+            (0, &[], TV),
+            (10, &["S"], TV),
+            (50, &[], TV),
+            (60, &[], TV),
+            (70, &["R"], TV),
+            (80, &[], TV),
+            // S5TMR-LOAD-01: after R both loads are 0, the base too (awlsim's LC keeps
+            // W#16#2000 here).
+            (100, &["S"], "W#16#2002"),
+            (1100, &["S"], "W#16#2002"),
+            (1200, &["S", "R"], "W#16#2002"),
+            (1300, &[], "W#16#2002"),
+            // S5TMR-LOAD-01: BCD is the BCD of BI on the 10 s base (15.119 s left in awlsim's
+            // clock, where its L gives 2 and its LC W#16#3001).
+            (1400, &["S"], "W#16#3002"),
+            (6281, &["S"], "W#16#3002"),
+            (6290, &["R"], "W#16#3002"),
+        ]),
+        Block::SPext => rows(&[
+            // S5TMR-R-01 (s5.md D3): a run-out S_PEXT keeps its base in BCD until R clears it.
+            (0, &[], "W#16#2002"),
+            (10, &["S"], "W#16#2002"),
+            (20, &[], "W#16#2002"),
+            (3000, &[], "W#16#2002"),
+            (3010, &["R"], "W#16#2002"),
+            (3020, &[], "W#16#2002"),
+        ]),
+        Block::SOdt => rows(&[
+            // SD-Q-01: restarted by FR with S held after expiry, Q = 0 while the new time runs
+            // (awlsim keeps Q = 1).
+            (0, &[], TV),
+            (10, &["S"], TV),
+            (200, &["S"], TV),
+            (210, &["S", "FR"], TV),
+            (260, &["S"], TV),
+            (400, &["S"], TV),
+        ]),
+        Block::SOdts => rows(&[
+            // SS-Q-01: run out with no execution in between, restarted by a rising S: Q stays
+            // 1 (awlsim shows Q = 0 until the new time runs out).
+            (0, &[], TV),
+            (10, &["S"], TV),
+            (20, &[], TV),
+            (500, &["S"], TV),
+            (550, &["S"], TV),
+            (700, &["S"], TV),
+            // The same through FR with S held.
+            (710, &["S", "R"], TV),
+            (720, &[], TV),
+            (730, &["S"], TV),
+            (1000, &["S", "FR"], TV),
+            (1050, &["S"], TV),
+            (1060, &["R"], TV),
+        ]),
+        Block::SOffdt => rows(&[
+            // SF-Q-01 (s5.md D1): R with S held: Q stays 0 until S falls.
+            (0, &[], TV),
+            (10, &["S"], TV),
+            (20, &["S", "R"], TV),
+            (30, &["S"], TV),
+            (40, &[], TV),
+            (200, &[], TV),
+            // SF-Q-01 (s5.md D2): a rising S while running stops the time, Q = 1, value kept.
+            (210, &["S"], TV),
+            (220, &[], TV),
+            (250, &["S"], TV),
+            (260, &["S"], TV),
+            (270, &["S", "R"], TV),
+            (280, &[], TV),
+            (400, &[], TV),
+        ]),
+        Block::Tp => rows(&[
+            // IEC-EXPIRY-01: the pulse ends in the call where ET reaches PT.
+            (0, &[], "T#20MS"),
+            (10, &["IN"], "T#20MS"),
+            (29, &[], "T#20MS"),
+            (30, &[], "T#20MS"),
+            (31, &[], "T#20MS"),
+        ]),
+        Block::Ton => rows(&[
+            // IEC-EXPIRY-01: Q rises in the call where ET reaches PT, not one call later.
+            (0, &[], "T#20MS"),
+            (10, &["IN"], "T#20MS"),
+            (29, &["IN"], "T#20MS"),
+            (30, &["IN"], "T#20MS"),
+            (31, &[], "T#20MS"),
+        ]),
+        Block::Tof => rows(&[
+            // IEC-EXPIRY-01: Q falls in the call where ET reaches PT.
+            (0, &["IN"], "T#20MS"),
+            (10, &[], "T#20MS"),
+            (29, &[], "T#20MS"),
+            (30, &[], "T#20MS"),
+            (31, &["IN"], "T#20MS"),
+        ]),
+        Block::Tonr => rows(&[
+            // IEC-EXPIRY-01: the accumulated time reaches PT: Q = 1 at ET = PT.
+            (0, &[], "T#20MS"),
+            (10, &["IN"], "T#20MS"),
+            (20, &[], "T#20MS"),
+            (30, &["IN"], "T#20MS"),
+            (39, &["IN"], "T#20MS"),
+            (40, &["IN"], "T#20MS"),
+            // TONR-RESUME-01: after R is released with IN held, it times again from 0.
+            (50, &["IN", "R"], "T#20MS"),
+            (60, &["IN", "R"], "T#20MS"),
+            (70, &["IN"], "T#20MS"),
+            (80, &["IN"], "T#20MS"),
+            (90, &["IN"], "T#20MS"),
+            (100, &[], "T#20MS"),
+        ]),
+        Block::Ctu | Block::Ctd | Block::Ctud => {
+            // CNT-PRIO-01: R and LD act as levels: edges at CU and CD while one is held do not
+            // count; releasing it with the count input held does not count (CNT-EDGE-01); R
+            // wins over LD.
+            let has = |n: &str| block.input_index(n).is_some();
+            if has("R") {
+                rows(&[
+                    (0, &["CU"], "3"),
+                    (0, &[], "3"),
+                    (0, &["R"], "3"),
+                    (0, &["R", "CU"], "3"),
+                    (0, &["R"], "3"),
+                    (0, &["R", "CU"], "3"),
+                    (0, &["CU"], "3"),
+                    (0, &[], "3"),
+                    (0, &["CU"], "3"),
+                ]);
+            }
+            if has("LD") {
+                rows(&[
+                    (0, &["LD"], "3"),
+                    (0, &["LD", "CD"], "3"),
+                    (0, &["LD"], "3"),
+                    (0, &["LD", "CD"], "3"),
+                    (0, &["CD"], "3"),
+                    (0, &[], "3"),
+                    (0, &["CD"], "3"),
+                ]);
+            }
+            if has("R") && has("LD") {
+                rows(&[(0, &["R", "LD"], "3"), (0, &["LD"], "3"), (0, &[], "3")]);
+            }
+        }
+        Block::SCu | Block::SCd | Block::SCud => return None,
+    }
+    Some(trace)
+}
+
 /// The reference's output for `text`.
 fn reference(spec: BlockSpec, text: &str) -> Result<String, TraceError> {
     let mut out = Vec::new();
@@ -498,6 +664,9 @@ fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> 
     if block.has_input(Fr) {
         traces.push(("fr.csv".into(), fr(block, kind).text()));
     }
+    if let Some(trace) = decisions(block) {
+        traces.push(("decisions.csv".into(), trace.text()));
+    }
     traces
         .into_iter()
         .map(|(file, text)| {
@@ -548,7 +717,9 @@ pub fn readme() -> String {
          2^32 ms clock wrap); preset-change.csv changes TV/PT/PV mid-run (the IEC timers latch\n\
          PT while running); long-gaps.csv (IEC timers) has gaps up to and past 2^31 and 2^32 ms;\n\
          limits.csv (counters) counts into the type's limits; simultaneous.csv raises every\n\
-         combination of inputs together; fr.csv (S5 blocks) has FR edges.\n\n\
+         combination of inputs together; fr.csv (S5 blocks) has FR edges; decisions.csv (timers,\n\
+         IEC counters) pins the decisions of spec/ that weigh a manual's wording or where other\n\
+         runtimes differ (the comments of cli/src/trace/vectors.rs name each).\n\n\
          Replay a file through your implementation, write the same columns, and compare with\n\
          \x20 plc-timers check BLOCK FILE          (add --type T for IEC counters)\n\
          which reports the first differing line and column, the rule that decides it, and the\n\
