@@ -334,7 +334,8 @@ typedef int32_t plc_timers_s5_counter_kind;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_i8 {
   /**
@@ -344,11 +345,11 @@ typedef struct plc_timers_counter_ref_i8 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  int8_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  int8_t cd_prev;
 } plc_timers_counter_ref_i8;
 
 /**
@@ -358,7 +359,8 @@ typedef struct plc_timers_counter_ref_i8 plc_timers_counter_sint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_i8 {
   /**
@@ -368,7 +370,7 @@ typedef struct plc_timers_counter_i8 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  int8_t edges;
 } plc_timers_counter_i8;
 
 /**
@@ -434,7 +436,8 @@ typedef struct plc_timers_counter_output_i8 plc_timers_counter_sint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_i16 {
   /**
@@ -444,11 +447,11 @@ typedef struct plc_timers_counter_ref_i16 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  int16_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  int16_t cd_prev;
 } plc_timers_counter_ref_i16;
 
 /**
@@ -458,7 +461,8 @@ typedef struct plc_timers_counter_ref_i16 plc_timers_counter_int_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_i16 {
   /**
@@ -468,7 +472,7 @@ typedef struct plc_timers_counter_i16 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  int16_t edges;
 } plc_timers_counter_i16;
 
 /**
@@ -534,7 +538,8 @@ typedef struct plc_timers_counter_output_i16 plc_timers_counter_int_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_i32 {
   /**
@@ -544,11 +549,11 @@ typedef struct plc_timers_counter_ref_i32 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  int32_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  int32_t cd_prev;
 } plc_timers_counter_ref_i32;
 
 /**
@@ -558,7 +563,8 @@ typedef struct plc_timers_counter_ref_i32 plc_timers_counter_dint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_i32 {
   /**
@@ -568,7 +574,7 @@ typedef struct plc_timers_counter_i32 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  int32_t edges;
 } plc_timers_counter_i32;
 
 /**
@@ -634,7 +640,8 @@ typedef struct plc_timers_counter_output_i32 plc_timers_counter_dint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_i64 {
   /**
@@ -644,11 +651,11 @@ typedef struct plc_timers_counter_ref_i64 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  int64_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  int64_t cd_prev;
 } plc_timers_counter_ref_i64;
 
 /**
@@ -658,7 +665,8 @@ typedef struct plc_timers_counter_ref_i64 plc_timers_counter_lint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_i64 {
   /**
@@ -668,7 +676,7 @@ typedef struct plc_timers_counter_i64 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  int64_t edges;
 } plc_timers_counter_i64;
 
 /**
@@ -734,7 +742,8 @@ typedef struct plc_timers_counter_output_i64 plc_timers_counter_lint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_u8 {
   /**
@@ -758,7 +767,8 @@ typedef struct plc_timers_counter_ref_u8 plc_timers_counter_usint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_u8 {
   /**
@@ -834,7 +844,8 @@ typedef struct plc_timers_counter_output_u8 plc_timers_counter_usint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_u16 {
   /**
@@ -844,11 +855,11 @@ typedef struct plc_timers_counter_ref_u16 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  uint16_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  uint16_t cd_prev;
 } plc_timers_counter_ref_u16;
 
 /**
@@ -858,7 +869,8 @@ typedef struct plc_timers_counter_ref_u16 plc_timers_counter_uint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_u16 {
   /**
@@ -868,7 +880,7 @@ typedef struct plc_timers_counter_u16 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  uint16_t edges;
 } plc_timers_counter_u16;
 
 /**
@@ -934,7 +946,8 @@ typedef struct plc_timers_counter_output_u16 plc_timers_counter_uint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_u32 {
   /**
@@ -944,11 +957,11 @@ typedef struct plc_timers_counter_ref_u32 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  uint32_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  uint32_t cd_prev;
 } plc_timers_counter_ref_u32;
 
 /**
@@ -958,7 +971,8 @@ typedef struct plc_timers_counter_ref_u32 plc_timers_counter_udint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_u32 {
   /**
@@ -968,7 +982,7 @@ typedef struct plc_timers_counter_u32 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  uint32_t edges;
 } plc_timers_counter_u32;
 
 /**
@@ -1034,7 +1048,8 @@ typedef struct plc_timers_counter_output_u32 plc_timers_counter_udint_output;
 
 /**
  * The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
- * All zero is a new counter.
+ * All zero is a new counter. The edge memories have the type of CV so that the struct has no
+ * padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
  */
 typedef struct plc_timers_counter_ref_u64 {
   /**
@@ -1044,11 +1059,11 @@ typedef struct plc_timers_counter_ref_u64 {
   /**
    * `CU` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cu_prev;
+  uint64_t cu_prev;
   /**
    * `CD` at the previous call (the edge memory), 0 or 1.
    */
-  uint8_t cd_prev;
+  uint64_t cd_prev;
 } plc_timers_counter_ref_u64;
 
 /**
@@ -1058,7 +1073,8 @@ typedef struct plc_timers_counter_ref_u64 plc_timers_counter_ulint_ref;
 
 /**
  * The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
- * the layout of the library's `Counter`. All zero is a new counter.
+ * CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+ * without its padding, so that every byte is defined. All zero is a new counter.
  */
 typedef struct plc_timers_counter_u64 {
   /**
@@ -1068,7 +1084,7 @@ typedef struct plc_timers_counter_u64 {
   /**
    * Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
    */
-  uint8_t edges;
+  uint64_t edges;
 } plc_timers_counter_u64;
 
 /**
@@ -1347,6 +1363,10 @@ typedef struct plc_timers_s5_timer {
    * bit 20 the FR edge memory; the other bits 0.
    */
   uint32_t word;
+  /**
+   * Zero (it makes the struct's padding explicit, so that every byte of it is defined).
+   */
+  uint32_t reserved;
 } plc_timers_s5_timer;
 
 /**

@@ -74,27 +74,44 @@ pub struct plc_timers_counter_output<T> {
 }
 
 /// The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
-/// All zero is a new counter.
+/// All zero is a new counter. The edge memories have the type of CV so that the struct has no
+/// padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_counter_ref<T> {
     /// `CV`.
     pub cv: T,
     /// `CU` at the previous call (the edge memory), 0 or 1.
-    pub cu_prev: u8,
+    pub cu_prev: T,
     /// `CD` at the previous call (the edge memory), 0 or 1.
-    pub cd_prev: u8,
+    pub cd_prev: T,
 }
 
 /// The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
-/// the layout of the library's `Counter`. All zero is a new counter.
+/// CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+/// without its padding, so that every byte is defined. All zero is a new counter.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_counter<T> {
     /// `CV`.
     pub cv: T,
     /// Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
-    pub edges: u8,
+    pub edges: T,
+}
+
+/// 0 or 1 of the integer type `T` for `b`.
+fn int_flag<T: CounterInt>(b: bool) -> T {
+    // 0 and 1 are in every counter type's range; ZERO is the fallback no call reaches.
+    T::from_i128(i128::from(b)).unwrap_or(T::ZERO)
+}
+
+/// `b` for 0 or 1 of `T`, `None` for any other value.
+fn int_flag_value<T: CounterInt>(v: T) -> Option<bool> {
+    match v.to_i128() {
+        0 => Some(false),
+        1 => Some(true),
+        _ => None,
+    }
 }
 
 impl<T: CounterInt> Mirror for plc_timers_counter_ref<T> {
@@ -103,8 +120,8 @@ impl<T: CounterInt> Mirror for plc_timers_counter_ref<T> {
     fn load(&self) -> Option<CounterRef<T>> {
         Some(CounterRef::from_state(CounterState {
             cv: self.cv,
-            cu_prev: flag(self.cu_prev)?,
-            cd_prev: flag(self.cd_prev)?,
+            cu_prev: int_flag_value(self.cu_prev)?,
+            cd_prev: int_flag_value(self.cd_prev)?,
         }))
     }
 
@@ -112,8 +129,8 @@ impl<T: CounterInt> Mirror for plc_timers_counter_ref<T> {
         let s = c.state();
         plc_timers_counter_ref {
             cv: s.cv,
-            cu_prev: s.cu_prev.into(),
-            cd_prev: s.cd_prev.into(),
+            cu_prev: int_flag(s.cu_prev),
+            cd_prev: int_flag(s.cd_prev),
         }
     }
 }
@@ -126,21 +143,24 @@ impl<T: CounterInt> Mirror for plc_timers_counter<T> {
     type Core = Counter<T>;
 
     fn load(&self) -> Option<Counter<T>> {
-        if self.edges & !(CU_PREV | CD_PREV) != 0 {
+        let edges = u8::try_from(self.edges.to_i128()).ok()?;
+        if edges & !(CU_PREV | CD_PREV) != 0 {
             return None;
         }
         Some(Counter::from_state(CounterState {
             cv: self.cv,
-            cu_prev: self.edges & CU_PREV != 0,
-            cd_prev: self.edges & CD_PREV != 0,
+            cu_prev: edges & CU_PREV != 0,
+            cd_prev: edges & CD_PREV != 0,
         }))
     }
 
     fn store(c: &Counter<T>) -> Self {
         let s = c.state();
+        let edges = if s.cu_prev { CU_PREV } else { 0 } | if s.cd_prev { CD_PREV } else { 0 };
         plc_timers_counter {
             cv: s.cv,
-            edges: if s.cu_prev { CU_PREV } else { 0 } | if s.cd_prev { CD_PREV } else { 0 },
+            // 0 to 3 is in every counter type's range; ZERO is the fallback no call reaches.
+            edges: T::from_i128(i128::from(edges)).unwrap_or(T::ZERO),
         }
     }
 }
@@ -332,6 +352,18 @@ impl Mirror for plc_timers_s5_counter {
 
 const _: () = assert!(core::mem::size_of::<plc_timers_s5_counter_ref>() == 6);
 const _: () = assert!(core::mem::size_of::<plc_timers_s5_counter>() == 2);
+// The optimized counter is as large as the library's (whose padding it fills with edges' type).
+const _: () =
+    assert!(core::mem::size_of::<plc_timers_counter<i8>>() == core::mem::size_of::<Counter<i8>>());
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<i16>>() == core::mem::size_of::<Counter<i16>>()
+);
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<i32>>() == core::mem::size_of::<Counter<i32>>()
+);
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<u64>>() == core::mem::size_of::<Counter<u64>>()
+);
 
 /// The S5 counter call on either form, through the family's interface.
 ///

@@ -197,3 +197,38 @@ pub(crate) fn flag(byte: u8) -> Option<bool> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::status::plc_timers_status::*;
+    use crate::timers::{
+        plc_timers_iec_input, plc_timers_iec_output, plc_timers_iec_timer,
+        plc_timers_iec_timer_call, plc_timers_iec_timer_init,
+    };
+
+    /// A misaligned pointer (which C cannot form without undefined behaviour, so the C tests
+    /// cannot pass one) is refused with `PLC_TIMERS_MISALIGNED_POINTER`, before any access.
+    #[test]
+    fn misaligned_pointers_are_refused() {
+        let mut buffer = [0u64; 8];
+        let base = buffer.as_mut_ptr().cast::<u8>();
+        let timer = base.wrapping_add(1).cast::<plc_timers_iec_timer>();
+        let out = base.wrapping_add(33).cast::<plc_timers_iec_output>();
+        let mut aligned_timer = plc_timers_iec_timer::default();
+        let mut aligned_out = plc_timers_iec_output::default();
+        let input = plc_timers_iec_input::default();
+        // SAFETY: the pointers point into `buffer`; the functions refuse them before any access.
+        unsafe {
+            assert_eq!(plc_timers_iec_timer_init(timer), PLC_TIMERS_MISALIGNED_POINTER);
+            assert_eq!(
+                plc_timers_iec_timer_call(timer, 1, 0, input, &mut aligned_out),
+                PLC_TIMERS_MISALIGNED_POINTER
+            );
+            assert_eq!(
+                plc_timers_iec_timer_call(&mut aligned_timer, 1, 0, input, out),
+                PLC_TIMERS_MISALIGNED_POINTER
+            );
+        }
+        assert_eq!(buffer, [0; 8]);
+    }
+}

@@ -239,12 +239,17 @@ pub struct plc_timers_s5_timer {
     /// base, bit 16 running, bit 17 Q, bit 18 the status on expiry, bit 19 the S edge memory,
     /// bit 20 the FR edge memory; the other bits 0.
     pub word: u32,
+    /// Zero (it makes the struct's padding explicit, so that every byte of it is defined).
+    pub reserved: u32,
 }
 
 impl Mirror for plc_timers_s5_timer {
     type Core = S5Timer;
 
     fn load(&self) -> Option<S5Timer> {
+        if self.reserved != 0 {
+            return None;
+        }
         let word = TimerWord::from_bits(self.word)?;
         S5Timer::from_state(word.state(), CpuTime::from_millis(self.last_call_ms))
     }
@@ -253,6 +258,7 @@ impl Mirror for plc_timers_s5_timer {
         plc_timers_s5_timer {
             last_call_ms: t.last_call().as_millis(),
             word: t.word().bits(),
+            reserved: 0,
         }
     }
 }
