@@ -39,10 +39,12 @@
 //! 1. The code of this crate has no path that panics: the lints at the top of this file deny
 //!    `unwrap`, `expect`, `panic!`, indexing and slicing, and unchecked arithmetic, so that
 //!    clippy (`-D warnings` in CI) rejects any such path.
-//! 2. The library's operations are total on valid states, and a call reaches them only with a
-//!    state its checking constructor accepted: their arithmetic is saturating or wrapping by
-//!    design, and the proofs (`proofs/`, run by `cargo test` with overflow checks on) exercise
-//!    every operation from every state of the exhaustive drivers.
+//! 2. A call reaches the library's operations only with a state its checking constructor
+//!    accepted and with inputs of their types (a kind, a checked S5TIME, a checked preset). On
+//!    such values the operations are written to be total (saturating or wrapping arithmetic, no
+//!    indexing out of a field's range); the proofs (`proofs/`, run by `cargo test` with overflow
+//!    checks on) run them from exhaustively enumerated and random valid states, and the literal
+//!    parsers are fuzz targets (`fuzz/`).
 //! 3. Should 1 and 2 ever fail, every function body runs inside `std::panic::catch_unwind`
 //!    (`guard`): a panic becomes `PLC_TIMERS_INTERNAL_ERROR` instead of an unwind into C. (That
 //!    needs the default `panic = "unwind"`; a build with `panic = "abort"` would abort the
