@@ -221,7 +221,10 @@ mod tests {
         let input = plc_timers_iec_input::default();
         // SAFETY: the pointers point into `buffer`; the functions refuse them before any access.
         unsafe {
-            assert_eq!(plc_timers_iec_timer_init(timer), PLC_TIMERS_MISALIGNED_POINTER);
+            assert_eq!(
+                plc_timers_iec_timer_init(timer),
+                PLC_TIMERS_MISALIGNED_POINTER
+            );
             assert_eq!(
                 plc_timers_iec_timer_call(timer, 1, 0, input, &mut aligned_out),
                 PLC_TIMERS_MISALIGNED_POINTER
