@@ -1,0 +1,1088 @@
+//! The counters: IEC counters (`CTU`, `CTD`, `CTUD`) over the eight integer types, and S5
+//! counters (`S_CU`, `S_CD`, `S_CUD`), each in its reference and its optimized form.
+//!
+//! The IEC counters' structs are generic here and monomorphic in C: cbindgen writes one struct
+//! per integer type (`plc_timers_counter_input_int16_t`, …) and the type names of the manual
+//! as typedefs (`plc_timers_counter_int_input` for INT, …). The functions are written out per
+//! type (C has no generics, and cbindgen does not expand macros); each is one line that calls
+//! the generic body.
+
+use plc_timers::counter::s5::{
+    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
+    S5CounterState,
+};
+use plc_timers::counter::{
+    Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterRef, CounterState,
+};
+
+use crate::status::plc_timers_status::{self, *};
+use crate::{flag, init, on_state, Mirror};
+
+// ---------------------------------------------------------------------------------------------
+// IEC counters
+
+/// The IEC counter instructions. Passed as `int32_t`.
+#[repr(i32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum plc_timers_counter_kind {
+    /// `CTU`, count up (inputs CU, R; output QU as Q).
+    PLC_TIMERS_CTU = 0,
+    /// `CTD`, count down (inputs CD, LD; output QD as Q).
+    PLC_TIMERS_CTD = 1,
+    /// `CTUD`, count up and down (inputs CU, CD, R, LD; outputs QU, QD).
+    PLC_TIMERS_CTUD = 2,
+}
+
+/// The IEC counter kind `kind` stands for.
+fn counter_kind(kind: i32) -> Result<CounterKind, plc_timers_status> {
+    Ok(match kind {
+        0 => CounterKind::Ctu,
+        1 => CounterKind::Ctd,
+        2 => CounterKind::Ctud,
+        _ => return Err(PLC_TIMERS_INVALID_KIND),
+    })
+}
+
+/// The inputs of one call of an IEC counter over the integer type `T`. The inputs an
+/// instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_counter_input<T> {
+    /// `CU`, count up on a rising edge.
+    pub cu: bool,
+    /// `CD`, count down on a rising edge.
+    pub cd: bool,
+    /// `R`, reset CV to 0 (level).
+    pub r: bool,
+    /// `LD`, load PV into CV (level).
+    pub ld: bool,
+    /// `PV`, the preset.
+    pub pv: T,
+}
+
+/// The outputs of one call of an IEC counter over the integer type `T`. CTU's `Q` is `qu`,
+/// CTD's `Q` is `qd`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_counter_output<T> {
+    /// `QU`: CV >= PV.
+    pub qu: bool,
+    /// `QD`: CV <= 0.
+    pub qd: bool,
+    /// `CV`, the count; it stays at the type's limits, never wraps.
+    pub cv: T,
+}
+
+/// The state of one IEC counter for the reference semantics (`plc_timers_counter_*_ref_*`).
+/// All zero is a new counter. The edge memories have the type of CV so that the struct has no
+/// padding: every byte of it is defined (a checksum over retentive instance data, `memcmp`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_counter_ref<T> {
+    /// `CV`.
+    pub cv: T,
+    /// `CU` at the previous call (the edge memory), 0 or 1.
+    pub cu_prev: T,
+    /// `CD` at the previous call (the edge memory), 0 or 1.
+    pub cd_prev: T,
+}
+
+/// The state of one IEC counter for the optimized implementation (`plc_timers_counter_*_*`):
+/// CV and the edge memories, the size of the library's `Counter` (twice the integer type's) but
+/// without its padding, so that every byte is defined. All zero is a new counter.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_counter<T> {
+    /// `CV`.
+    pub cv: T,
+    /// Bit 0: `CU` at the previous call; bit 1: `CD` at the previous call; the other bits 0.
+    pub edges: T,
+}
+
+/// 0 or 1 of the integer type `T` for `b`.
+fn int_flag<T: CounterInt>(b: bool) -> T {
+    // 0 and 1 are in every counter type's range; ZERO is the fallback no call reaches.
+    T::from_i128(i128::from(b)).unwrap_or(T::ZERO)
+}
+
+/// `b` for 0 or 1 of `T`, `None` for any other value.
+fn int_flag_value<T: CounterInt>(v: T) -> Option<bool> {
+    match v.to_i128() {
+        0 => Some(false),
+        1 => Some(true),
+        _ => None,
+    }
+}
+
+impl<T: CounterInt> Mirror for plc_timers_counter_ref<T> {
+    type Core = CounterRef<T>;
+
+    fn load(&self) -> Option<CounterRef<T>> {
+        Some(CounterRef::from_state(CounterState {
+            cv: self.cv,
+            cu_prev: int_flag_value(self.cu_prev)?,
+            cd_prev: int_flag_value(self.cd_prev)?,
+        }))
+    }
+
+    fn store(c: &CounterRef<T>) -> Self {
+        let s = c.state();
+        plc_timers_counter_ref {
+            cv: s.cv,
+            cu_prev: int_flag(s.cu_prev),
+            cd_prev: int_flag(s.cd_prev),
+        }
+    }
+}
+
+/// The edge bits of `plc_timers_counter::edges`.
+const CU_PREV: u8 = 1;
+const CD_PREV: u8 = 2;
+
+impl<T: CounterInt> Mirror for plc_timers_counter<T> {
+    type Core = Counter<T>;
+
+    fn load(&self) -> Option<Counter<T>> {
+        let edges = u8::try_from(self.edges.to_i128()).ok()?;
+        if edges & !(CU_PREV | CD_PREV) != 0 {
+            return None;
+        }
+        Some(Counter::from_state(CounterState {
+            cv: self.cv,
+            cu_prev: edges & CU_PREV != 0,
+            cd_prev: edges & CD_PREV != 0,
+        }))
+    }
+
+    fn store(c: &Counter<T>) -> Self {
+        let s = c.state();
+        let edges = if s.cu_prev { CU_PREV } else { 0 } | if s.cd_prev { CD_PREV } else { 0 };
+        plc_timers_counter {
+            cv: s.cv,
+            // 0 to 3 is in every counter type's range; ZERO is the fallback no call reaches.
+            edges: T::from_i128(i128::from(edges)).unwrap_or(T::ZERO),
+        }
+    }
+}
+
+/// The IEC counter call on either form and any integer type, through the family's interface.
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+unsafe fn counter_call<M: Mirror, T: CounterInt>(
+    counter: *mut M,
+    kind: i32,
+    input: plc_timers_counter_input<T>,
+    out: *mut plc_timers_counter_output<T>,
+) -> plc_timers_status
+where
+    M::Core: CounterOps<T>,
+{
+    // SAFETY: the caller's contract.
+    unsafe {
+        on_state(counter, out, |c| {
+            let kind = counter_kind(kind)?;
+            let i = input;
+            let input = CounterInput {
+                cu: i.cu,
+                cd: i.cd,
+                r: i.r,
+                ld: i.ld,
+                pv: i.pv,
+            };
+            let o = c.call(kind, input);
+            Ok(plc_timers_counter_output {
+                qu: o.qu,
+                qd: o.qd,
+                cv: o.cv,
+            })
+        })
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// S5 counters
+
+/// The S5 counter boxes. Passed as `int32_t`.
+#[repr(i32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum plc_timers_s5_counter_kind {
+    /// `S_CU` (German `Z_VORW`): count up.
+    PLC_TIMERS_S_CU = 0,
+    /// `S_CD` (German `Z_RUECK`): count down.
+    PLC_TIMERS_S_CD = 1,
+    /// `S_CUD` (German `ZAEHLER`): count up and down.
+    PLC_TIMERS_S_CUD = 2,
+}
+
+/// The S5 counter kind `kind` stands for.
+pub(crate) fn s5_counter_kind(kind: i32) -> Result<S5CounterKind, plc_timers_status> {
+    Ok(match kind {
+        0 => S5CounterKind::SCu,
+        1 => S5CounterKind::SCd,
+        2 => S5CounterKind::SCud,
+        _ => return Err(PLC_TIMERS_INVALID_KIND),
+    })
+}
+
+/// The S5 counter preset of the count `pv`.
+pub(crate) fn counter_preset(pv: u16) -> Result<CounterPreset, plc_timers_status> {
+    CounterPreset::new(pv).map_err(|_| PLC_TIMERS_INVALID_PRESET)
+}
+
+/// The inputs of one S5 counter box call. The inputs a box lacks (CD of S_CU, CU of S_CD) are
+/// ignored.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_s5_counter_input {
+    /// `CU` (`ZV`), count up on a rising edge.
+    pub cu: bool,
+    /// `CD` (`ZR`), count down on a rising edge.
+    pub cd: bool,
+    /// `S`, set CV to PV on a rising edge.
+    pub s: bool,
+    /// `R`, reset CV to 0 (level).
+    pub r: bool,
+    /// `FR`, the enable (STL `FR C n`; the LAD boxes have none: false).
+    pub fr: bool,
+    /// `PV`, the preset as a count 0 to 999 (binary; `C#5` is 5), e.g. from
+    /// `plc_timers_counter_preset_parse`.
+    pub pv: u16,
+}
+
+impl plc_timers_s5_counter_input {
+    /// The library's inputs.
+    pub(crate) fn load(self) -> Result<S5CounterInput, plc_timers_status> {
+        Ok(S5CounterInput {
+            cu: self.cu,
+            cd: self.cd,
+            s: self.s,
+            r: self.r,
+            fr: self.fr,
+            pv: counter_preset(self.pv)?,
+        })
+    }
+}
+
+/// The outputs of one S5 counter box call.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_s5_counter_output {
+    /// `Q`: CV != 0.
+    pub q: bool,
+    /// `CV` (`DUAL`), the count in binary, 0 to 999.
+    pub cv: u16,
+    /// `CV_BCD` (`DEZ`), the count as three BCD digits.
+    pub cv_bcd: u16,
+}
+
+impl From<plc_timers::counter::s5::S5CounterOutput> for plc_timers_s5_counter_output {
+    fn from(o: plc_timers::counter::s5::S5CounterOutput) -> Self {
+        plc_timers_s5_counter_output {
+            q: o.q,
+            cv: o.cv,
+            cv_bcd: o.cv_bcd,
+        }
+    }
+}
+
+/// The state of one S5 counter for the reference semantics (`plc_timers_s5_counter_ref_*`).
+/// 6 bytes, alignment 2; all zero is a cleared counter.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_s5_counter_ref {
+    /// `CV`, 0 to 999.
+    pub cv: u16,
+    /// `CU` at the previous call (edge memory), 0 or 1.
+    pub cu_prev: u8,
+    /// `CD` at the previous call (edge memory), 0 or 1.
+    pub cd_prev: u8,
+    /// `S` at the previous call (edge memory), 0 or 1.
+    pub s_prev: u8,
+    /// `FR` at the previous call (edge memory), 0 or 1.
+    pub fr_prev: u8,
+}
+
+impl Mirror for plc_timers_s5_counter_ref {
+    type Core = S5CounterRef;
+
+    fn load(&self) -> Option<S5CounterRef> {
+        S5CounterRef::from_state(S5CounterState {
+            cv: self.cv,
+            cu_prev: flag(self.cu_prev)?,
+            cd_prev: flag(self.cd_prev)?,
+            s_prev: flag(self.s_prev)?,
+            fr_prev: flag(self.fr_prev)?,
+        })
+    }
+
+    fn store(c: &S5CounterRef) -> Self {
+        let s = c.state();
+        plc_timers_s5_counter_ref {
+            cv: s.cv,
+            cu_prev: s.cu_prev.into(),
+            cd_prev: s.cd_prev.into(),
+            s_prev: s.s_prev.into(),
+            fr_prev: s.fr_prev.into(),
+        }
+    }
+}
+
+/// The state of one S5 counter for the optimized implementation (`plc_timers_s5_counter_*`): the
+/// CPU's 16-bit counter word. All zero is a cleared counter.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_s5_counter {
+    /// The counter word: bits 9-0 CV (binary, 0 to 999), bits 12-15 the edge memories of CU,
+    /// CD, S and FR; the other bits 0.
+    pub word: u16,
+}
+
+impl Mirror for plc_timers_s5_counter {
+    type Core = S5Counter;
+
+    fn load(&self) -> Option<S5Counter> {
+        S5Counter::from_bits(self.word)
+    }
+
+    fn store(c: &S5Counter) -> Self {
+        plc_timers_s5_counter { word: c.bits() }
+    }
+}
+
+const _: () = assert!(core::mem::size_of::<plc_timers_s5_counter_ref>() == 6);
+const _: () = assert!(core::mem::size_of::<plc_timers_s5_counter>() == 2);
+// The optimized counter is as large as the library's (whose padding it fills with edges' type).
+const _: () =
+    assert!(core::mem::size_of::<plc_timers_counter<i8>>() == core::mem::size_of::<Counter<i8>>());
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<i16>>() == core::mem::size_of::<Counter<i16>>()
+);
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<i32>>() == core::mem::size_of::<Counter<i32>>()
+);
+const _: () = assert!(
+    core::mem::size_of::<plc_timers_counter<u64>>() == core::mem::size_of::<Counter<u64>>()
+);
+
+/// The S5 counter call on either form, through the family's interface.
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+unsafe fn s5_counter_call<M: Mirror>(
+    counter: *mut M,
+    kind: i32,
+    input: plc_timers_s5_counter_input,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status
+where
+    M::Core: S5CounterOps,
+{
+    // SAFETY: the caller's contract.
+    unsafe {
+        on_state(counter, out, |c| {
+            let kind = s5_counter_kind(kind)?;
+            let input = input.load()?;
+            Ok(c.call(kind, input).into())
+        })
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The IEC counters per integer type (one line each over the generic bodies above)
+
+/// The inputs of an IEC counter of type SINT (`i8` in Rust).
+pub type plc_timers_counter_sint_input = plc_timers_counter_input<i8>;
+/// The outputs of an IEC counter of type SINT.
+pub type plc_timers_counter_sint_output = plc_timers_counter_output<i8>;
+/// The state of an IEC counter of type SINT, reference form.
+pub type plc_timers_counter_sint_ref = plc_timers_counter_ref<i8>;
+/// The state of an IEC counter of type SINT, optimized form.
+pub type plc_timers_counter_sint = plc_timers_counter<i8>;
+
+/// Initializes an IEC counter of type SINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_sint_ref_init(
+    counter: *mut plc_timers_counter_sint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type SINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_sint_init(
+    counter: *mut plc_timers_counter_sint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type SINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_sint_ref_call(
+    counter: *mut plc_timers_counter_sint_ref,
+    kind: i32,
+    input: plc_timers_counter_sint_input,
+    out: *mut plc_timers_counter_sint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type SINT, by the optimized
+/// implementation: the same as `plc_timers_counter_sint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_sint_call(
+    counter: *mut plc_timers_counter_sint,
+    kind: i32,
+    input: plc_timers_counter_sint_input,
+    out: *mut plc_timers_counter_sint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type INT (`i16` in Rust).
+pub type plc_timers_counter_int_input = plc_timers_counter_input<i16>;
+/// The outputs of an IEC counter of type INT.
+pub type plc_timers_counter_int_output = plc_timers_counter_output<i16>;
+/// The state of an IEC counter of type INT, reference form.
+pub type plc_timers_counter_int_ref = plc_timers_counter_ref<i16>;
+/// The state of an IEC counter of type INT, optimized form.
+pub type plc_timers_counter_int = plc_timers_counter<i16>;
+
+/// Initializes an IEC counter of type INT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_int_ref_init(
+    counter: *mut plc_timers_counter_int_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type INT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_int_init(
+    counter: *mut plc_timers_counter_int,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type INT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_int_ref_call(
+    counter: *mut plc_timers_counter_int_ref,
+    kind: i32,
+    input: plc_timers_counter_int_input,
+    out: *mut plc_timers_counter_int_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type INT, by the optimized
+/// implementation: the same as `plc_timers_counter_int_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_int_call(
+    counter: *mut plc_timers_counter_int,
+    kind: i32,
+    input: plc_timers_counter_int_input,
+    out: *mut plc_timers_counter_int_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type DINT (`i32` in Rust).
+pub type plc_timers_counter_dint_input = plc_timers_counter_input<i32>;
+/// The outputs of an IEC counter of type DINT.
+pub type plc_timers_counter_dint_output = plc_timers_counter_output<i32>;
+/// The state of an IEC counter of type DINT, reference form.
+pub type plc_timers_counter_dint_ref = plc_timers_counter_ref<i32>;
+/// The state of an IEC counter of type DINT, optimized form.
+pub type plc_timers_counter_dint = plc_timers_counter<i32>;
+
+/// Initializes an IEC counter of type DINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_dint_ref_init(
+    counter: *mut plc_timers_counter_dint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type DINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_dint_init(
+    counter: *mut plc_timers_counter_dint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type DINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_dint_ref_call(
+    counter: *mut plc_timers_counter_dint_ref,
+    kind: i32,
+    input: plc_timers_counter_dint_input,
+    out: *mut plc_timers_counter_dint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type DINT, by the optimized
+/// implementation: the same as `plc_timers_counter_dint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_dint_call(
+    counter: *mut plc_timers_counter_dint,
+    kind: i32,
+    input: plc_timers_counter_dint_input,
+    out: *mut plc_timers_counter_dint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type LINT (`i64` in Rust).
+pub type plc_timers_counter_lint_input = plc_timers_counter_input<i64>;
+/// The outputs of an IEC counter of type LINT.
+pub type plc_timers_counter_lint_output = plc_timers_counter_output<i64>;
+/// The state of an IEC counter of type LINT, reference form.
+pub type plc_timers_counter_lint_ref = plc_timers_counter_ref<i64>;
+/// The state of an IEC counter of type LINT, optimized form.
+pub type plc_timers_counter_lint = plc_timers_counter<i64>;
+
+/// Initializes an IEC counter of type LINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_lint_ref_init(
+    counter: *mut plc_timers_counter_lint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type LINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_lint_init(
+    counter: *mut plc_timers_counter_lint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type LINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_lint_ref_call(
+    counter: *mut plc_timers_counter_lint_ref,
+    kind: i32,
+    input: plc_timers_counter_lint_input,
+    out: *mut plc_timers_counter_lint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type LINT, by the optimized
+/// implementation: the same as `plc_timers_counter_lint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_lint_call(
+    counter: *mut plc_timers_counter_lint,
+    kind: i32,
+    input: plc_timers_counter_lint_input,
+    out: *mut plc_timers_counter_lint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type USINT (`u8` in Rust).
+pub type plc_timers_counter_usint_input = plc_timers_counter_input<u8>;
+/// The outputs of an IEC counter of type USINT.
+pub type plc_timers_counter_usint_output = plc_timers_counter_output<u8>;
+/// The state of an IEC counter of type USINT, reference form.
+pub type plc_timers_counter_usint_ref = plc_timers_counter_ref<u8>;
+/// The state of an IEC counter of type USINT, optimized form.
+pub type plc_timers_counter_usint = plc_timers_counter<u8>;
+
+/// Initializes an IEC counter of type USINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_usint_ref_init(
+    counter: *mut plc_timers_counter_usint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type USINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_usint_init(
+    counter: *mut plc_timers_counter_usint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type USINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_usint_ref_call(
+    counter: *mut plc_timers_counter_usint_ref,
+    kind: i32,
+    input: plc_timers_counter_usint_input,
+    out: *mut plc_timers_counter_usint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type USINT, by the optimized
+/// implementation: the same as `plc_timers_counter_usint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_usint_call(
+    counter: *mut plc_timers_counter_usint,
+    kind: i32,
+    input: plc_timers_counter_usint_input,
+    out: *mut plc_timers_counter_usint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type UINT (`u16` in Rust).
+pub type plc_timers_counter_uint_input = plc_timers_counter_input<u16>;
+/// The outputs of an IEC counter of type UINT.
+pub type plc_timers_counter_uint_output = plc_timers_counter_output<u16>;
+/// The state of an IEC counter of type UINT, reference form.
+pub type plc_timers_counter_uint_ref = plc_timers_counter_ref<u16>;
+/// The state of an IEC counter of type UINT, optimized form.
+pub type plc_timers_counter_uint = plc_timers_counter<u16>;
+
+/// Initializes an IEC counter of type UINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_uint_ref_init(
+    counter: *mut plc_timers_counter_uint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type UINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_uint_init(
+    counter: *mut plc_timers_counter_uint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type UINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_uint_ref_call(
+    counter: *mut plc_timers_counter_uint_ref,
+    kind: i32,
+    input: plc_timers_counter_uint_input,
+    out: *mut plc_timers_counter_uint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type UINT, by the optimized
+/// implementation: the same as `plc_timers_counter_uint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_uint_call(
+    counter: *mut plc_timers_counter_uint,
+    kind: i32,
+    input: plc_timers_counter_uint_input,
+    out: *mut plc_timers_counter_uint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type UDINT (`u32` in Rust).
+pub type plc_timers_counter_udint_input = plc_timers_counter_input<u32>;
+/// The outputs of an IEC counter of type UDINT.
+pub type plc_timers_counter_udint_output = plc_timers_counter_output<u32>;
+/// The state of an IEC counter of type UDINT, reference form.
+pub type plc_timers_counter_udint_ref = plc_timers_counter_ref<u32>;
+/// The state of an IEC counter of type UDINT, optimized form.
+pub type plc_timers_counter_udint = plc_timers_counter<u32>;
+
+/// Initializes an IEC counter of type UDINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_udint_ref_init(
+    counter: *mut plc_timers_counter_udint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type UDINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_udint_init(
+    counter: *mut plc_timers_counter_udint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type UDINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_udint_ref_call(
+    counter: *mut plc_timers_counter_udint_ref,
+    kind: i32,
+    input: plc_timers_counter_udint_input,
+    out: *mut plc_timers_counter_udint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type UDINT, by the optimized
+/// implementation: the same as `plc_timers_counter_udint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_udint_call(
+    counter: *mut plc_timers_counter_udint,
+    kind: i32,
+    input: plc_timers_counter_udint_input,
+    out: *mut plc_timers_counter_udint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// The inputs of an IEC counter of type ULINT (`u64` in Rust).
+pub type plc_timers_counter_ulint_input = plc_timers_counter_input<u64>;
+/// The outputs of an IEC counter of type ULINT.
+pub type plc_timers_counter_ulint_output = plc_timers_counter_output<u64>;
+/// The state of an IEC counter of type ULINT, reference form.
+pub type plc_timers_counter_ulint_ref = plc_timers_counter_ref<u64>;
+/// The state of an IEC counter of type ULINT, optimized form.
+pub type plc_timers_counter_ulint = plc_timers_counter<u64>;
+
+/// Initializes an IEC counter of type ULINT (reference form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_ulint_ref_init(
+    counter: *mut plc_timers_counter_ulint_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, CounterRef::new()) }
+}
+
+/// Initializes an IEC counter of type ULINT (optimized form): CV = 0, no edge seen (the same as
+/// zeroing the struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_ulint_init(
+    counter: *mut plc_timers_counter_ulint,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, Counter::new()) }
+}
+
+/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
+/// type ULINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
+/// CV stays at the type's limits. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_ulint_ref_call(
+    counter: *mut plc_timers_counter_ulint_ref,
+    kind: i32,
+    input: plc_timers_counter_ulint_input,
+    out: *mut plc_timers_counter_ulint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// One call of the IEC counter instruction `kind` on a counter of type ULINT, by the optimized
+/// implementation: the same as `plc_timers_counter_ulint_ref_call`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_ulint_call(
+    counter: *mut plc_timers_counter_ulint,
+    kind: i32,
+    input: plc_timers_counter_ulint_input,
+    out: *mut plc_timers_counter_ulint_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_call(counter, kind, input, out) }
+}
+
+/// Initializes an S5 counter (reference form): CV = 0, edge memories 0 (the same as zeroing the
+/// struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_ref_init(
+    counter: *mut plc_timers_s5_counter_ref,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, S5CounterRef::new()) }
+}
+
+/// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the reference
+/// semantics: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
+/// stays in 0 to 999. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
+/// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_ref_call(
+    counter: *mut plc_timers_s5_counter_ref,
+    kind: i32,
+    input: plc_timers_s5_counter_input,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { s5_counter_call(counter, kind, input, out) }
+}
+
+/// Initializes an S5 counter (optimized form): CV = 0, edge memories 0 (the same as zeroing the
+/// struct).
+///
+/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
+///
+/// # Safety
+/// `counter` is NULL or points to writable memory for its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_init(
+    counter: *mut plc_timers_s5_counter,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { init(counter, S5Counter::new()) }
+}
+
+/// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the optimized
+/// implementation: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
+/// stays in 0 to 999. The outputs are written to `out`.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
+/// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_call(
+    counter: *mut plc_timers_s5_counter,
+    kind: i32,
+    input: plc_timers_s5_counter_input,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { s5_counter_call(counter, kind, input, out) }
+}
