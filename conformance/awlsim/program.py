@@ -3,7 +3,7 @@
 Each program is one OB1 that executes the block once, the way the STEP 7 box compiles to STL:
 the S5 timers as ``FR``, the start operation (``SP SE SD SS SF`` with TV loaded), ``R``, then
 ``L``, ``LC`` and ``A`` for BI, BCD and Q; the S5 counters as ``FR``, ``CU``, ``CD``, ``S``
-(PV loaded), ``R``, then ``L``, ``LC`` and ``A``; the IEC blocks as ``CALL SFB n, DB n`` with
+(PV loaded), ``R``, then ``L``, ``LC`` and ``A``; the IEC blocks as ``CALL SFB n, DB 10+n`` with
 their parameters. Inputs come from the process-image inputs (bits of IB 0, the preset in IW 2
 or ID 4), outputs go to the process-image outputs (Q 0.x, QW 2, QW 4, QD 8), which the runner
 writes and reads between cycles. This module does not import awlsim.
@@ -99,9 +99,10 @@ def stl(block: str) -> str:
     for col, (kind, where) in lay.outputs.items():
         params.append({"bit": f"{col} := Q 0.{where}", "word": f"{col} := QW {where}",
                        "int": f"{col} := QW {where}", "dword": f"{col} := QD {where}"}[kind])
-    call = f"CALL SFB {n}, DB {n} (\n" + ",\n".join(f"\t\t{p}" for p in params) + "\n\t)"
+    db = 10 + n  # DB 0 does not exist
+    call = f"CALL SFB {n}, DB {db} (\n" + ",\n".join(f"\t\t{p}" for p in params) + "\n\t)"
     return (f"ORGANIZATION_BLOCK OB 1\nBEGIN\n\t{call}\nEND_ORGANIZATION_BLOCK\n"
-            f"DATA_BLOCK DB {n}\n\tSFB {n}\nBEGIN\nEND_DATA_BLOCK\n")
+            f"DATA_BLOCK DB {db}\n\tSFB {n}\nBEGIN\nEND_DATA_BLOCK\n")
 
 
 def bcd3(n: int) -> int:
