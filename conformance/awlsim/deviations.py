@@ -65,18 +65,30 @@ def _tick_phase(c: Case) -> bool:
     return c.column == "Q" and "S5TMR-TICK-01" in c.rules
 
 
+def _bcd_value(word: int) -> int:
+    return (word >> 8 & 0xF) * 100 + (word >> 4 & 0xF) * 10 + (word & 0xF)
+
+
 def _lc_word(c: Case) -> bool:
-    """BI agrees but LC's word differs in its BCD digits or base bits: awlsim's LC rounds down
-    on the 1 s and 10 s bases where L rounds to nearest, and keeps the base bits after R."""
+    """BI and Q agree but LC's word does not: either only the base bits differ and the digits
+    are 000 (awlsim keeps the base bits after R), or the base is 1 s or 10 s and the digits are
+    one unit apart (awlsim's LC rounds the remaining time down there, its L to nearest)."""
     if c.block not in S5_TIMERS or c.column != "BCD":
         return False
     g, w = c.got[-1], c.want[-1]
-    return g["BI"] == w["BI"] and g["Q"] == w["Q"]
+    if g["BI"] != w["BI"] or g["Q"] != w["Q"]:
+        return False
+    gb, wb = g["BCD"], w["BCD"]
+    base_kept = gb & 0x0FFF == wb & 0x0FFF == 0 and gb != wb
+    rounded_down = (gb & 0x3000 == wb & 0x3000 and gb >> 12 & 3 >= 2
+                    and _bcd_value(wb) - _bcd_value(gb) == 1)
+    return base_kept or rounded_down
 
 
 def _zero(c: Case) -> bool:
-    """A timer started with TV = 0 (value digits 000) in this row or the one before."""
-    return c.block in S5_TIMERS and any(_tv_units(c, i) == 0 for i in (-1, -2)
+    """Q differs and a timer was started with TV = 0 (digits 000) in this row or the one
+    before."""
+    return c.block in S5_TIMERS and c.column == "Q" and any(_tv_units(c, i) == 0 for i in (-1, -2)
                                         if len(c.rows) >= -i)
 
 
@@ -122,10 +134,10 @@ DOCUMENTED = [
               "computes the remaining time from a deadline in ms and rounds it: BI steps at the "
               "phase of the start, not on the whole multiples of the base", _tick_phase),
     Deviation("S5TMR-LOAD-01", "spec/s5.md", ("LC",),
-              "LC gives a word that L's value does not: the base bits kept after R, the digits "
-              "rounded down on the 1 s and 10 s bases", _lc_word),
+              "gives with LC a word that L's value does not: the base bits kept after R, "
+              "the digits rounded down on the 1 s and 10 s bases", _lc_word),
     Deviation("S5TMR-ZERO-01", "spec/s5.md", ("first access",),
-              "a timer started with value 0 has run out at its first access, even the same "
+              "lets a timer started with value 0 run out at its first access, even the same "
               "box's read of Q", _zero),
     Deviation("SD-Q-01", "spec/s5.md", ("FR",),
               "keeps Q = 1 through an FR restart of an expired S_ODT", _odt_restart),
@@ -133,15 +145,15 @@ DOCUMENTED = [
               "loses Q = 1 when an S_ODTS is restarted after its time ran out, when no access "
               "saw the expiry before the restart", _odts_restart),
     Deviation("SC-SET-01", "spec/counter.md", ("clear",),
-              "a set does not clear the count memories: a count input held through the set "
-              "does not count", _set_with_count_held),
+              "does not clear the count memories on a set: a count input held through the "
+              "set does not count", _set_with_count_held),
     Deviation("IEC-PT-LATCH-01", "spec/iec.md", ("live",),
               "reads PT live on every call", _named("IEC-PT-LATCH-01")),
     Deviation("IEC-PT0-01", "spec/iec.md", ("reset",),
-              "SFB 3, 4, 5 treat PT = 0 as a reset (and a negative PT as an error: Q = 0, "
-              "ET = 0)", _pt_not_positive),
+              "treats PT = 0 as a reset in SFB 3, 4, 5 (and a negative PT as an error: "
+              "Q = 0, ET = 0)", _pt_not_positive),
     Deviation("IEC-WRAP-01", "spec/iec.md", ("31 bits",),
-              "a 31-bit millisecond clock: gaps alias at 2^31 ms", _named("IEC-WRAP-01")),
+              "uses a 31-bit millisecond clock: gaps alias at 2^31 ms", _named("IEC-WRAP-01")),
     Deviation("TP-RETRIGGER-01", "spec/matrix.md", (),
               "drops a rising IN in the call where the pulse runs out",
               _named("TP-RETRIGGER-01")),
@@ -154,6 +166,26 @@ def classify(case: Case):
         if d.applies(case):
             return d
     return None
+
+
+def spec_line(repo, d: Deviation):
+    """The line of ``d.spec`` that names the requirement, awlsim and the entry's words, or
+    None."""
+    try:
+        text = (repo / d.spec).read_text(encoding="utf-8")
+    except OSError:
+        return None
+    for ln in text.splitlines():
+        if d.rule in ln and "awlsim" in ln.lower() and all(w in ln for w in d.words):
+            return ln
+    return None
+
+
+def spec_row(repo, d: Deviation) -> str:
+    """The first cell of the documenting table row (the open point it decides)."""
+    ln = spec_line(repo, d) or ""
+    cells = [c.strip() for c in ln.split("|")]
+    return cells[1] if len(cells) > 2 else d.rule
 
 
 def verify(repo) -> list:

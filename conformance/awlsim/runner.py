@@ -61,6 +61,12 @@ def classify(block: str, rows: list, got: list, diff) -> tuple:
     return (dev.rule if dev else None, key_of(diff))
 
 
+def group_key(cls: tuple) -> tuple:
+    """A documented deviation is one group whatever rules check names (they are counted
+    inside it); an undocumented difference is grouped by check's rules."""
+    return (cls[0], None) if cls[0] else cls
+
+
 def shrink(block: str, rows: list, key: tuple) -> list:
     """A short trace whose first difference falls in the same group (same deviation, same
     rules from check): the prefix up to the first difference, then rows removed one at a time
@@ -71,13 +77,20 @@ def shrink(block: str, rows: list, key: tuple) -> list:
             return None
         got = awl.run(block, candidate)
         d = explain(block, candidate, got)
-        if d is not None and classify(block, candidate, got, d) == key:
+        if d is not None and group_key(classify(block, candidate, got, d)) == key:
             return candidate[: d.line - 1]
         return None
 
     best = reproduces(rows)
     if best is None:  # cannot happen: rows reproduce by construction
         raise AssertionError(f"{block}: the trace no longer reproduces {key}")
+    if "t_ms" in best[0]:
+        # Earlier times: shift by a multiple of 10 s (S5 ticks of every base stay in place).
+        shift = int(best[0]["t_ms"]) // 10000 * 10000
+        if shift:
+            moved = reproduces([{**r, "t_ms": int(r["t_ms"]) - shift} for r in best])
+            if moved is not None:
+                best = moved
     changed = True
     while changed:
         changed = False
@@ -93,7 +106,8 @@ def shrink(block: str, rows: list, key: tuple) -> list:
 @dataclass
 class Group:
     block: str
-    key: tuple  # (documented deviation or None, check's rules)
+    key: tuple  # group_key: (documented deviation, None) or (None, check's rules)
+    by_rules: dict = field(default_factory=dict)  # check's rules -> [traces, rows]
     traces: int = 0
     rows: int = 0
     example: list = field(default_factory=list)
@@ -184,8 +198,12 @@ def main(argv=None) -> int:
             print(f"{block} {name}: check disagrees with run on the first difference "
                   f"(run: line {first + 2}, check: {d})", file=sys.stderr)
             return 1
-        key = classify(block, rows, got, d)
+        cls = classify(block, rows, got, d)
+        key = group_key(cls)
         g = groups.setdefault((block, key), Group(block, key))
+        sub = g.by_rules.setdefault(cls[1], [0, 0])
+        sub[0] += 1
+        sub[1] += n_diff
         g.traces += 1
         g.rows += n_diff
         if not g.example or first + 1 < len(g.example):
@@ -203,9 +221,9 @@ def main(argv=None) -> int:
         print(f"{block:8} {st.traces:4} traces {st.rows:6} rows, {st.differing_rows:5} rows "
               f"differ in {st.differing_traces} traces")
     for g in groups.values():
-        state = g.key[0] or "NOT DOCUMENTED"
-        print(f"  {g.block:8} {' + '.join(g.key[1]) or '(no rule)'}: {g.traces} traces, "
-              f"{g.rows} rows, minimal {len(g.minimal)} rows, {state}")
+        name = g.key[0] or "NOT DOCUMENTED (check: " + " + ".join(g.key[1]) + ")"
+        print(f"  {g.block:8} {name}: {g.traces} traces, {g.rows} rows, minimal trace "
+              f"{len(g.minimal)} rows")
     print(f"report: {args.report}  ({time.monotonic() - started:.0f} s, reference: "
           f"{reference.backend()})")
     if failures:
@@ -254,22 +272,28 @@ def write_report(args, blocks, stats, groups) -> None:
             "| requirement | documented in | awlsim | traces |", "|---|---|---|---:|"]
     for d in deviations.DOCUMENTED:
         n = sum(g.traces for g in groups.values() if g.key[0] == d.rule)
-        out.append(f"| {d.rule} | `{d.spec}` (the row naming {d.rule} and awlsim) | "
+        out.append(f"| {d.rule} | `{d.spec}`: {deviations.spec_row(REPO, d)} | "
                    f"{d.awlsim} | {n} |")
     out += ["", "## Groups", ""]
     order = sorted(groups.values(), key=lambda g: (blocks.index(g.block), g.key[0] or "~",
-                                                   g.key[1]))
+                                                   g.key[1] or ()))
     for g in order:
         dev, rules = g.key
-        out.append(f"### {g.block}: {dev or 'UNDOCUMENTED'} (check: {' + '.join(rules)})")
+        title = dev or f"UNDOCUMENTED (check: {' + '.join(rules) or 'no requirement'})"
+        out.append(f"### {g.block}: {title}")
         out.append("")
-        out.append(f"{g.traces} traces, {g.rows} differing rows. First seen in "
-                   f"`{g.example_name}`, line {g.example_line}, column {g.column}; the "
-                   f"reference there: {g.message}.")
+        out.append(f"{g.traces} traces, {g.rows} differing rows. The requirements `check` "
+                   "names at the first difference: " + "; ".join(
+                       f"{' + '.join(r) or 'none'} ({t} traces, {n} rows)"
+                       for r, (t, n) in sorted(g.by_rules.items())) + ".")
+        out.append("")
+        out.append(f"Shortest first seen in `{g.example_name}`, line {g.example_line}, column "
+                   f"{g.column}; the reference there: {g.message}.")
         out.append("")
         if dev:
             d = next(x for x in deviations.DOCUMENTED if x.rule == dev)
-            out.append(f"Documented in `{d.spec}` ({dev}): awlsim {d.awlsim}.")
+            out.append(f"Documented in `{d.spec}`, row \"{deviations.spec_row(REPO, d)}\" "
+                       f"({dev}): awlsim {d.awlsim}.")
         else:
             out.append("**Not documented**: no entry of `conformance/awlsim/deviations.py` "
                        "explains this difference.")

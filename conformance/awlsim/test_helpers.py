@@ -103,6 +103,20 @@ class DeviationsTest(unittest.TestCase):
                                [{"Q": False, "CV": 1}], "CV", ("CNT-EDGE-01",))
         self.assertIsNone(deviations.classify(case))
 
+    def lc_case(self, got_bcd, want_bcd, bi=3):
+        row = {"t_ms": 0, "S": 1, "R": 0, "TV": "W#16#2005"}
+        return deviations.Case("S_PULSE", [row], [{"Q": True, "BI": bi, "BCD": got_bcd}],
+                               [{"Q": True, "BI": bi, "BCD": want_bcd}], "BCD",
+                               ("S5TMR-RANGE-01",))
+
+    def test_lc_entry_takes_only_the_two_measured_forms(self):
+        ok = deviations.classify(self.lc_case(0x2003, 0x2004, bi=4))  # 1 s base, one unit
+        self.assertEqual(ok.rule, "S5TMR-LOAD-01")
+        kept = deviations.classify(self.lc_case(0x2000, 0x0000, bi=0))  # base kept after R
+        self.assertEqual(kept.rule, "S5TMR-LOAD-01")
+        self.assertIsNone(deviations.classify(self.lc_case(0x2002, 0x2004, bi=4)))  # two units
+        self.assertIsNone(deviations.classify(self.lc_case(0x0003, 0x0004, bi=4)))  # 10 ms base
+
 
 if __name__ == "__main__":
     unittest.main()
