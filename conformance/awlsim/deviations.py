@@ -45,6 +45,11 @@ class Deviation:
     words: tuple  # words on the documenting line, besides the ID and "awlsim"
     awlsim: str  # what awlsim does, in a line
     applies: Callable[[Case], bool]
+    tag: str = ""  # tells two entries of one requirement apart
+
+    @property
+    def name(self) -> str:
+        return f"{self.rule} ({self.tag})" if self.tag else self.rule
 
 
 S5_TIMERS = ("S_PULSE", "S_PEXT", "S_ODT", "S_ODTS", "S_OFFDT")
@@ -70,9 +75,9 @@ def _bcd_value(word: int) -> int:
 
 
 def _lc_word(c: Case) -> bool:
-    """BI and Q agree but LC's word does not: either only the base bits differ and the digits
-    are 000 (awlsim keeps the base bits after R), or the base is 1 s or 10 s and the digits are
-    one unit apart (awlsim's LC rounds the remaining time down there, its L to nearest)."""
+    """BI and Q agree but LC's word does not, in one of the two forms measured: only the base
+    bits differ and the digits are 000 (awlsim keeps the base bits after R), or the base is
+    1 s or 10 s and LC's digits are one unit below L's value (awlsim's LC rounds down there)."""
     if c.block not in S5_TIMERS or c.column != "BCD":
         return False
     g, w = c.got[-1], c.want[-1]
@@ -81,8 +86,19 @@ def _lc_word(c: Case) -> bool:
     gb, wb = g["BCD"], w["BCD"]
     base_kept = gb & 0x0FFF == wb & 0x0FFF == 0 and gb != wb
     rounded_down = (gb & 0x3000 == wb & 0x3000 and gb >> 12 & 3 >= 2
-                    and _bcd_value(wb) - _bcd_value(gb) == 1)
+                    and g["BI"] - _bcd_value(gb) == 1)
     return base_kept or rounded_down
+
+
+def _lc_half_unit(c: Case) -> bool:
+    """On the 10 ms or 100 ms base, awlsim's own L and LC one unit apart while L agrees with
+    the reference: at an exact half unit, L's round(remaining / base) and LC's
+    round(remaining * 100) (or * 10) fall on different sides."""
+    if c.block not in S5_TIMERS or c.column != "BCD":
+        return False
+    g, w = c.got[-1], c.want[-1]
+    return (g["BI"] == w["BI"] and g["Q"] == w["Q"] and g["BCD"] >> 12 & 3 < 2
+            and abs(_bcd_value(g["BCD"]) - g["BI"]) == 1)
 
 
 def _zero(c: Case) -> bool:
@@ -136,6 +152,10 @@ DOCUMENTED = [
     Deviation("S5TMR-LOAD-01", "spec/s5.md", ("LC",),
               "gives with LC a word that L's value does not: the base bits kept after R, "
               "the digits rounded down on the 1 s and 10 s bases", _lc_word),
+    Deviation("S5TMR-LOAD-01", "spec/s5.md", ("half unit",),
+              "computes L and LC of the same timer with two floating-point expressions that "
+              "round differently at an exact half unit of the 10 ms and 100 ms bases (BI 11, "
+              "LC W#16#0012)", _lc_half_unit, tag="half unit"),
     Deviation("S5TMR-ZERO-01", "spec/s5.md", ("first access",),
               "lets a timer started with value 0 run out at its first access, even the same "
               "box's read of Q", _zero),
@@ -182,10 +202,11 @@ def spec_line(repo, d: Deviation):
 
 
 def spec_row(repo, d: Deviation) -> str:
-    """The first cell of the documenting table row (the open point it decides)."""
+    """The first cell of the documenting table row (the open point it decides), or the
+    paragraph's words up to its first colon."""
     ln = spec_line(repo, d) or ""
     cells = [c.strip() for c in ln.split("|")]
-    return cells[1] if len(cells) > 2 else d.rule
+    return cells[1] if len(cells) > 2 else ln.split(":")[0].strip()
 
 
 def verify(repo) -> list:

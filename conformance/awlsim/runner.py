@@ -56,9 +56,13 @@ def classify(block: str, rows: list, got: list, diff) -> tuple:
     None, and check's rules)."""
     i = diff.line - 1  # rows[i - 1] is the differing row
     want = reference.run(block, rows[:i], **preset_kw(block))
-    case = deviations.Case(block, rows[:i], got[:i], want, diff.column.upper(), key_of(diff))
+    column = next(c for c in want[-1] if want[-1][c] != got[i - 1][c])
+    if isinstance(diff.column, str) and diff.column.upper() != column.upper():
+        raise AssertionError(f"{block}: check names column {diff.column}, the first differing "
+                             f"output is {column}")
+    case = deviations.Case(block, rows[:i], got[:i], want, column.upper(), key_of(diff))
     dev = deviations.classify(case)
-    return (dev.rule if dev else None, key_of(diff))
+    return (dev.name if dev else None, key_of(diff))
 
 
 def group_key(cls: tuple) -> tuple:
@@ -271,8 +275,8 @@ def write_report(args, blocks, stats, groups) -> None:
             f"{len(undoc)} not documented in `spec/`.", "", "## Documented deviations", "",
             "| requirement | documented in | awlsim | traces |", "|---|---|---|---:|"]
     for d in deviations.DOCUMENTED:
-        n = sum(g.traces for g in groups.values() if g.key[0] == d.rule)
-        out.append(f"| {d.rule} | `{d.spec}`: {deviations.spec_row(REPO, d)} | "
+        n = sum(g.traces for g in groups.values() if g.key[0] == d.name)
+        out.append(f"| {d.name} | `{d.spec}`: {deviations.spec_row(REPO, d)} | "
                    f"{d.awlsim} | {n} |")
     out += ["", "## Groups", ""]
     order = sorted(groups.values(), key=lambda g: (blocks.index(g.block), g.key[0] or "~",
@@ -291,7 +295,7 @@ def write_report(args, blocks, stats, groups) -> None:
                    f"{g.column}; the reference there: {g.message}.")
         out.append("")
         if dev:
-            d = next(x for x in deviations.DOCUMENTED if x.rule == dev)
+            d = next(x for x in deviations.DOCUMENTED if x.name == dev)
             out.append(f"Documented in `{d.spec}`, row \"{deviations.spec_row(REPO, d)}\" "
                        f"({dev}): awlsim {d.awlsim}.")
         else:

@@ -115,7 +115,9 @@ class DeviationsTest(unittest.TestCase):
         kept = deviations.classify(self.lc_case(0x2000, 0x0000, bi=0))  # base kept after R
         self.assertEqual(kept.rule, "S5TMR-LOAD-01")
         self.assertIsNone(deviations.classify(self.lc_case(0x2002, 0x2004, bi=4)))  # two units
-        self.assertIsNone(deviations.classify(self.lc_case(0x0003, 0x0004, bi=4)))  # 10 ms base
+        half = deviations.classify(self.lc_case(0x0012, 0x0011, bi=11))  # 10 ms, L and LC apart
+        self.assertEqual(half.name, "S5TMR-LOAD-01 (half unit)")
+        self.assertIsNone(deviations.classify(self.lc_case(0x0013, 0x0011, bi=11)))  # two units
 
 
 if __name__ == "__main__":
