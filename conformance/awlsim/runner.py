@@ -17,7 +17,6 @@ from pathlib import Path
 
 import awl
 import deviations
-import program
 import reference
 import traces
 

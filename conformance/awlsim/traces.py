@@ -28,7 +28,7 @@ def read_csv(path: Path) -> list:
     return [dict(r) for r in csv.DictReader(lines)]
 
 
-def _cell(column: str, text: str):
+def _cell(text: str):
     """A vector's cell as a row value: integers (t_ms, booleans, numeric presets) as int,
     literals (S5T#…, T#…, C#…, W#16#…) as written."""
     t = text.strip()
@@ -46,7 +46,7 @@ def vector_traces(vectors: Path) -> list:
     for block in BLOCKS:
         folder = vectors / (f"{block}-INT" if block.startswith("CT") else block)
         for path in sorted(folder.glob("*.csv")):
-            rows = [{k: _cell(k, v) for k, v in r.items() if k.upper() not in reference.OUTPUTS}
+            rows = [{k: _cell(v) for k, v in r.items() if k.upper() not in reference.OUTPUTS}
                     for r in read_csv(path)]
             if rows:
                 out.append((block, f"vectors/{folder.name}/{path.name}", rows))
