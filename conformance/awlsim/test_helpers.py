@@ -93,6 +93,24 @@ class AdapterTest(unittest.TestCase):
         self.assertEqual(reference.time_ms("T#2s_200ms"), 2200)
 
 
+class ShrinkTest(unittest.TestCase):
+    def test_a_padded_trace_shrinks_to_its_core(self):
+        import runner
+        # TON with PT raised from 10 to 50 ms while running: the reference keeps 10 ms
+        # (IEC-PT-LATCH-01), awlsim reads 50 live; rows of IN = 0 before it are padding.
+        rows = [{"t_ms": t, "IN": 0, "PT": 10} for t in range(0, 50, 5)]
+        rows += [{"t_ms": 60, "IN": 1, "PT": 10}, {"t_ms": 65, "IN": 1, "PT": 50},
+                 {"t_ms": 75, "IN": 1, "PT": 50}, {"t_ms": 90, "IN": 1, "PT": 50}]
+        got, _want, first, _n = runner.first_difference("TON", rows)
+        self.assertEqual(first, len(rows) - 2)  # at 75 ms: the reference's Q rises
+        d = runner.explain("TON", rows, got)
+        key = runner.group_key(runner.classify("TON", rows, got, d))
+        self.assertEqual(key, ("IEC-PT-LATCH-01", None))
+        small = runner.shrink("TON", rows, key)
+        self.assertLessEqual(len(small), 3)
+        self.assertEqual(small[-1]["t_ms"], 75)
+
+
 class DeviationsTest(unittest.TestCase):
     def test_every_entry_cites_an_awlsim_paragraph(self):
         self.assertEqual(deviations.verify(reference.REPO), [])
