@@ -5,8 +5,10 @@
     (booleans as ``bool``, integers as ``int``, BCD words as ``int``).
 ``check(block, rows, **same)``
     The first row where the outputs carried by ``rows`` differ from the reference's, as a
-    ``Difference`` (``line`` counts CSV lines, the header is line 1; ``column``; ``expected``;
-    ``actual``; ``rules``, the requirement IDs deciding that output there; ``message``), or None.
+    ``Difference`` (``line`` counts CSV lines, the header is line 1; ``column``, 1-based;
+    ``output``, its name; ``expected``; ``actual``; ``rules``, the requirement IDs deciding that
+    output there; ``what``, what the reference did at that row; ``message``, the whole text),
+    or None.
 
 Both come from the Python package ``plc_timers`` when it is importable (the bindings of the
 crate); otherwise from the command ``plc-timers`` (``run`` and ``check`` over CSV, see
@@ -43,10 +45,12 @@ class Difference:
     """The first difference between a trace's outputs and the reference's."""
 
     line: int
-    column: str
+    column: int
+    output: str
     expected: str
     actual: str
     rules: list = field(default_factory=list)
+    what: str = ""
     message: str = ""
 
 
@@ -150,7 +154,7 @@ def _cli_run(block, rows, *, tv, pt, pv, type, optimized) -> list:
     return [{c: _value(c, rec[i]) for i, c in outs} for rec in lines[1:]]
 
 
-_DIFF = re.compile(r"DIFFERENT at line (\d+), column \d+ \(([^)]*)\): "
+_DIFF = re.compile(r"DIFFERENT at line (\d+), column (\d+) \(([^)]*)\): "
                    r"the reference gives (.*), the trace has (.*)$")
 _RULE = re.compile(r"^([A-Z0-9]+(?:-[A-Z0-9]+)+): ")
 
@@ -166,7 +170,7 @@ def _cli_check(block, rows, *, tv, pt, pv, type, optimized) -> Optional[Differen
     m = _DIFF.match(lines[0])
     if m is None:
         raise ValueError(f"plc-timers check {block}: unexpected report: {lines[0]!r}")
-    message = lines[1].removeprefix("at this row: ") if len(lines) > 1 else ""
+    what = lines[1].removeprefix("at this row: ") if len(lines) > 1 else ""
     rules = []
     for line in lines[2:]:
         if line.startswith("rows up to it"):
@@ -174,8 +178,9 @@ def _cli_check(block, rows, *, tv, pt, pv, type, optimized) -> Optional[Differen
         r = _RULE.match(line)
         if r:
             rules.append(r.group(1))
-    return Difference(line=int(m.group(1)), column=m.group(2), expected=m.group(3),
-                      actual=m.group(4), rules=rules, message=message)
+    return Difference(line=int(m.group(1)), column=int(m.group(2)), output=m.group(3),
+                      expected=m.group(4), actual=m.group(5), rules=rules, what=what,
+                      message=proc.stdout)
 
 
 # --- literal conversions (the command's `s5time` and `time`), for presets given as literals ----

@@ -56,8 +56,8 @@ def classify(block: str, rows: list, got: list, diff) -> tuple:
     i = diff.line - 1  # rows[i - 1] is the differing row
     want = reference.run(block, rows[:i], **preset_kw(block))
     column = next(c for c in want[-1] if want[-1][c] != got[i - 1][c])
-    if isinstance(diff.column, str) and diff.column.upper() != column.upper():
-        raise AssertionError(f"{block}: check names column {diff.column}, the first differing "
+    if diff.output.upper() != column.upper():
+        raise AssertionError(f"{block}: check names output {diff.output}, the first differing "
                              f"output is {column}")
     case = deviations.Case(block, rows[:i], got[:i], want, column.upper(), key_of(diff))
     dev = deviations.classify(case)
@@ -211,7 +211,7 @@ def main(argv=None) -> int:
         g.rows += n_diff
         if not g.example or first + 1 < len(g.example):
             g.example, g.example_name, g.example_line = rows[: first + 1], name, first + 2
-            g.message, g.column = d.message, d.column
+            g.message, g.column = d.what, d.output
 
     failures = 0
     for g in groups.values():

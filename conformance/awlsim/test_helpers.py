@@ -82,7 +82,7 @@ class AdapterTest(unittest.TestCase):
                 {"t_ms": 16, "S": 1, "R": 0, "TV": "S5T#50MS", "Q": 1, "BI": 5, "BCD": 5}]
         d = reference.check("S_PULSE", rows)
         self.assertIsNotNone(d)
-        self.assertEqual((d.line, str(d.column).upper()), (4, "BI"))
+        self.assertEqual((d.line, d.column, d.output), (4, 6, "BI"))
         self.assertIn("S5TMR-TICK-01", d.rules)
         rows[2].update(BI=4, BCD=4)
         self.assertIsNone(reference.check("S_PULSE", rows))
