@@ -203,10 +203,10 @@ def spec_line(repo, d: Deviation):
 
 def spec_row(repo, d: Deviation) -> str:
     """The first cell of the documenting table row (the open point it decides), or the
-    paragraph's words up to its first colon."""
+    paragraph's line that names it."""
     ln = spec_line(repo, d) or ""
     cells = [c.strip() for c in ln.split("|")]
-    return cells[1] if len(cells) > 2 else ln.split(":")[0].strip()
+    return cells[1] if len(cells) > 2 else ln.strip()
 
 
 def verify(repo) -> list:
