@@ -101,7 +101,20 @@ fn output<'py, T: Element>(
     }
 }
 
-/// Writes `f(i)` for every lane into `arr` (borrowed writable for the time of it).
+/// `arr` borrowed writable, or an error that says why it cannot be.
+fn writable<'py, T: Element>(
+    arr: &Bound<'py, PyArray1<T>>,
+    what: &str,
+) -> PyResult<numpy::PyReadwriteArray1<'py, T>> {
+    arr.try_readwrite().map_err(|e| {
+        PyValueError::new_err(format!(
+            "the {what} output array cannot be written now ({e}); pass arrays that are not \
+             also inputs"
+        ))
+    })
+}
+
+/// Writes every lane into `arr` with `f` (borrowed writable for the time of it).
 fn fill<T: Element + Copy>(
     arr: &Bound<'_, PyArray1<T>>,
     what: &str,
@@ -229,22 +242,24 @@ impl PyTonBank {
             };
             bank.scan(now, inputs, &self.pt);
         }
-        let banks = &self.banks;
-        fill(&q, "q", |q| {
-            for (chunk, bank) in q.chunks_mut(CHUNK).zip(banks) {
-                for (slot, o) in chunk.iter_mut().zip(bank.outputs()) {
-                    *slot = o.q;
-                }
+        // Q and ET in one pass over each core bank, into both arrays at once.
+        let mut q_rw = writable(&q, "q")?;
+        let mut et_rw = writable(&et, "et")?;
+        let (q_all, et_all) = match (q_rw.as_slice_mut(), et_rw.as_slice_mut()) {
+            (Ok(q), Ok(et)) => (q, et),
+            _ => return Err(PyValueError::new_err("the output arrays must be contiguous")),
+        };
+        let chunks = q_all
+            .chunks_mut(CHUNK)
+            .zip(et_all.chunks_mut(CHUNK))
+            .zip(&self.banks);
+        for ((q, et), bank) in chunks {
+            for ((q, et), o) in q.iter_mut().zip(et.iter_mut()).zip(bank.outputs()) {
+                *q = o.q;
+                // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
+                *et = o.et as i32;
             }
-        })?;
-        fill(&et, "et", |et| {
-            for (chunk, bank) in et.chunks_mut(CHUNK).zip(banks) {
-                for (slot, o) in chunk.iter_mut().zip(bank.outputs()) {
-                    // ET <= PT <= 2**31-1 (IecState::is_valid).
-                    *slot = i32::try_from(o.et).unwrap_or(i32::MAX);
-                }
-            }
-        })?;
+        }
         Ok((q, et))
     }
 
