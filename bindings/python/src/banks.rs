@@ -180,6 +180,9 @@ pub struct PyTonBank {
     pt: Box<[Time; CHUNK]>,
     /// The inputs of the last, padded chunk.
     tail: Box<[bool; CHUNK]>,
+    /// One chunk's Q (for the last, shorter chunk) and ET (ms, before the cast to int32).
+    q: Box<[bool; CHUNK]>,
+    et: Box<[u32; CHUNK]>,
 }
 
 #[pymethods]
@@ -194,6 +197,8 @@ impl PyTonBank {
             last: None,
             pt: Box::new([Time::from_millis(0); CHUNK]),
             tail: Box::new([false; CHUNK]),
+            q: Box::new([false; CHUNK]),
+            et: Box::new([0; CHUNK]),
         })
     }
 
@@ -247,17 +252,28 @@ impl PyTonBank {
         let mut et_rw = writable(&et, "et")?;
         let (q_all, et_all) = match (q_rw.as_slice_mut(), et_rw.as_slice_mut()) {
             (Ok(q), Ok(et)) => (q, et),
-            _ => return Err(PyValueError::new_err("the output arrays must be contiguous")),
+            _ => {
+                return Err(PyValueError::new_err(
+                    "the output arrays must be contiguous",
+                ))
+            }
         };
         let chunks = q_all
             .chunks_mut(CHUNK)
             .zip(et_all.chunks_mut(CHUNK))
             .zip(&self.banks);
+        let (q_buf, et_buf) = (&mut self.q, &mut self.et);
         for ((q, et), bank) in chunks {
-            for ((q, et), o) in q.iter_mut().zip(et.iter_mut()).zip(bank.outputs()) {
-                *q = o.q;
+            match <&mut [bool; CHUNK]>::try_from(&mut *q) {
+                Ok(full) => bank.outputs_into(full, et_buf),
+                Err(_) => {
+                    bank.outputs_into(q_buf, et_buf);
+                    q.copy_from_slice(&q_buf[..q.len()]);
+                }
+            }
+            for (slot, &v) in et.iter_mut().zip(et_buf.iter()) {
                 // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
-                *et = o.et as i32;
+                *slot = v as i32;
             }
         }
         Ok((q, et))

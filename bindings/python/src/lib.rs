@@ -42,7 +42,18 @@ pyo3::create_exception!(
      what is allowed."
 );
 
-/// The module `plc_timers`.
+/// plc_timers: the reference semantics of the Siemens S7 timers and counters (S5 timers S_PULSE
+/// … S_OFFDT, IEC timers TP TON TOF TONR, IEC counters CTU CTD CTUD, S5 counters S_CU S_CD
+/// S_CUD), each as a class with the reference or the optimized implementation
+/// (`optimized=True`); the memory areas TimerMemory and CounterMemory with their STL
+/// operations; the literals S5Time, Time and CounterPreset; `run` and `check` over traces in
+/// memory (the engine of the `plc-timers` command); TonBank and CounterBank over numpy arrays.
+/// No block reads a clock: every timer call takes the CPU time it runs at, in ms.
+///
+/// >>> import plc_timers
+/// >>> ton = plc_timers.TON(pt="T#500ms")
+/// >>> ton.call(0, in_=True).q, ton.call(500, in_=True).q
+/// (False, True)
 #[pymodule(name = "plc_timers")]
 fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
