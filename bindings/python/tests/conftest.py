@@ -57,13 +57,6 @@ def read_trace(path: Path) -> Tuple[List[str], List[List[str]]]:
     return [c.strip() for c in records[0]], [[c.strip() for c in r] for r in records[1:]]
 
 
-def value(cell: str) -> bool | int:
-    """A cell of the trace format as Python reads an output: `0`/`1`... as written, a word."""
-    if cell.upper().startswith("W#16#"):
-        return int(cell[5:], 16)
-    return int(cell)
-
-
 def vector_files(root: Path) -> Iterator[Tuple[str, str, Path]]:
     """(block, integer type, file) of every vector under `root`."""
     for d in sorted(p for p in root.iterdir() if p.is_dir()):
