@@ -84,7 +84,7 @@ impl PyS5Time {
     }
 
     fn __repr__(&self) -> String {
-        format!("S5Time.from_word(0x{:04X})  # {}", self.0.to_word(), self.0)
+        format!("S5Time.from_word(0x{:04X})", self.0.to_word())
     }
 }
 

@@ -256,3 +256,17 @@ def test_trace_errors_name_line_and_column() -> None:
 
 def test_readme_example_runs_in_process() -> None:
     runpy.run_path(str(HERE.parent / "examples" / "readme.py"), run_name="__main__")
+
+
+def test_check_some_outputs_and_tuples() -> None:
+    """`outputs=` compares only those outputs; a trace without the others is then complete."""
+    rows = [(0, 1, 0), (500, 1, 1), (700, 0, 1)]
+    d = plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], outputs=["Q"], pt=500)
+    assert d is not None
+    assert (d.line, d.column, d.output, d.expected, d.actual) == (4, 3, "Q", False, True)
+    assert d.rules and d.what and d.message.startswith("DIFFERENT at line 4, column 3 (Q)")
+    with pytest.raises(plc_timers.TraceError, match="the trace has no `ET` column"):
+        plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], pt=500)
+    with pytest.raises(plc_timers.TraceError) as e:
+        plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], outputs=["CV"], pt=500)
+    assert e.value.option == "outputs"
