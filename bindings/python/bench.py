@@ -12,13 +12,18 @@ the array checks, the conversion of PT and the writing of Q and ET into numpy ar
 from __future__ import annotations
 
 import argparse
+import os
 import platform
 import statistics
 import time
 from typing import Callable, List
 
-import numpy as np
-import plc_timers
+# numpy's BLAS threads spin while idle and take a core from the loop measured (none of the
+# work here uses BLAS): one thread.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+import plc_timers  # noqa: E402
 
 N = 10_048
 SCAN_MS = 10

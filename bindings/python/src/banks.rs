@@ -114,25 +114,6 @@ fn writable<'py, T: Element>(
     })
 }
 
-/// Writes every lane into `arr` with `f` (borrowed writable for the time of it).
-fn fill<T: Element + Copy>(
-    arr: &Bound<'_, PyArray1<T>>,
-    what: &str,
-    mut f: impl FnMut(&mut [T]),
-) -> PyResult<()> {
-    let mut rw = arr.try_readwrite().map_err(|e| {
-        PyValueError::new_err(format!(
-            "the {what} output array cannot be written now ({e}); pass arrays that are not \
-             also inputs"
-        ))
-    })?;
-    let slice = rw
-        .as_slice_mut()
-        .map_err(|_| PyValueError::new_err(format!("the {what} output array is not contiguous")))?;
-    f(slice);
-    Ok(())
-}
-
 /// The arrays of `out=`, each `None` when `out` is not given.
 type OutPair<'py> = (Option<Bound<'py, PyAny>>, Option<Bound<'py, PyAny>>);
 
@@ -231,23 +212,8 @@ impl PyTonBank {
             (Ok(i), Ok(p)) => (i, p),
             _ => return Err(PyValueError::new_err("in_ and pt must be contiguous")),
         };
-        self.last = Some(now);
-        for (k, bank) in self.banks.iter_mut().enumerate() {
-            let lo = k * CHUNK;
-            let hi = (lo + CHUNK).min(n);
-            for (t, &ms) in self.pt.iter_mut().zip(&preset[lo..hi]) {
-                *t = Time::from_millis(ms);
-            }
-            let inputs: &[bool; CHUNK] = match <&[bool; CHUNK]>::try_from(&input[lo..hi]) {
-                Ok(full) => full,
-                Err(_) => {
-                    self.tail[..hi - lo].copy_from_slice(&input[lo..hi]);
-                    &self.tail
-                }
-            };
-            bank.scan(now, inputs, &self.pt);
-        }
-        // Q and ET in one pass over each core bank, into both arrays at once.
+        // The outputs are borrowed before the scan, so that an array that cannot be written
+        // (e.g. `in_` given again as an output) fails the call before any timer changes.
         let mut q_rw = writable(&q, "q")?;
         let mut et_rw = writable(&et, "et")?;
         let (q_all, et_all) = match (q_rw.as_slice_mut(), et_rw.as_slice_mut()) {
@@ -258,20 +224,33 @@ impl PyTonBank {
                 ))
             }
         };
-        let chunks = q_all
-            .chunks_mut(CHUNK)
-            .zip(et_all.chunks_mut(CHUNK))
-            .zip(&self.banks);
-        let (q_buf, et_buf) = (&mut self.q, &mut self.et);
-        for ((q, et), bank) in chunks {
-            match <&mut [bool; CHUNK]>::try_from(&mut *q) {
-                Ok(full) => bank.outputs_into(full, et_buf),
+        self.last = Some(now);
+        let chunks = self
+            .banks
+            .iter_mut()
+            .zip(q_all.chunks_mut(CHUNK).zip(et_all.chunks_mut(CHUNK)))
+            .zip(input.chunks(CHUNK).zip(preset.chunks(CHUNK)));
+        for ((bank, (q, et)), (input, preset)) in chunks {
+            for (t, &ms) in self.pt.iter_mut().zip(preset) {
+                *t = Time::from_millis(ms);
+            }
+            let inputs: &[bool; CHUNK] = match <&[bool; CHUNK]>::try_from(input) {
+                Ok(full) => full,
                 Err(_) => {
-                    bank.outputs_into(q_buf, et_buf);
-                    q.copy_from_slice(&q_buf[..q.len()]);
+                    self.tail[..input.len()].copy_from_slice(input);
+                    &self.tail
+                }
+            };
+            bank.scan(now, inputs, &self.pt);
+            // Q and ET of the chunk just scanned, while its state is in cache.
+            match <&mut [bool; CHUNK]>::try_from(&mut *q) {
+                Ok(full) => bank.outputs_into(full, &mut self.et),
+                Err(_) => {
+                    bank.outputs_into(&mut self.q, &mut self.et);
+                    q.copy_from_slice(&self.q[..q.len()]);
                 }
             }
-            for (slot, &v) in et.iter_mut().zip(et_buf.iter()) {
+            for (slot, &v) in et.iter_mut().zip(self.et.iter()) {
                 // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
                 *slot = v as i32;
             }
@@ -382,7 +361,28 @@ impl<T: CounterInt + Element> AnyBank for Lanes<T> {
         let qu = output::<bool>(py, qu_out.as_ref(), "qu", "bool_", n)?;
         let qd = output::<bool>(py, qd_out.as_ref(), "qd", "bool_", n)?;
         let cv = output::<T>(py, cv_out.as_ref(), "cv", self.dtype, n)?;
-        for (k, bank) in self.banks.iter_mut().enumerate() {
+        // The outputs are borrowed before the scan, so that an array that cannot be written
+        // fails the call before any counter changes.
+        let mut qu_rw = writable(&qu, "qu")?;
+        let mut qd_rw = writable(&qd, "qd")?;
+        let mut cv_rw = writable(&cv, "cv")?;
+        let (qu_all, qd_all, cv_all) = match (
+            qu_rw.as_slice_mut(),
+            qd_rw.as_slice_mut(),
+            cv_rw.as_slice_mut(),
+        ) {
+            (Ok(a), Ok(b), Ok(c)) => (a, b, c),
+            _ => {
+                return Err(PyValueError::new_err(
+                    "the output arrays must be contiguous",
+                ))
+            }
+        };
+        let outs = qu_all
+            .chunks_mut(CHUNK)
+            .zip(qd_all.chunks_mut(CHUNK))
+            .zip(cv_all.chunks_mut(CHUNK));
+        for (k, (bank, ((qu, qd), cv))) in self.banks.iter_mut().zip(outs).enumerate() {
             let lo = k * CHUNK;
             let hi = (lo + CHUNK).min(n);
             for (buf, given) in self.buf.iter_mut().zip(&inputs) {
@@ -393,29 +393,14 @@ impl<T: CounterInt + Element> AnyBank for Lanes<T> {
             }
             let [cu, cd, r, ld] = &*self.buf;
             bank.scan(&BankInputs { cu, cd, r, ld }, pv);
+            let slots = qu.iter_mut().zip(qd.iter_mut()).zip(cv.iter_mut());
+            for (((qu, qd), cv), o) in slots.zip(bank.outputs(pv)) {
+                *qu = o.qu;
+                *qd = o.qd;
+                *cv = o.cv;
+            }
         }
-        let banks = &self.banks;
-        fill(&qu, "qu", |s| {
-            for (chunk, bank) in s.chunks_mut(CHUNK).zip(banks) {
-                for (slot, o) in chunk.iter_mut().zip(bank.outputs(pv)) {
-                    *slot = o.qu;
-                }
-            }
-        })?;
-        fill(&qd, "qd", |s| {
-            for (chunk, bank) in s.chunks_mut(CHUNK).zip(banks) {
-                for (slot, o) in chunk.iter_mut().zip(bank.outputs(pv)) {
-                    *slot = o.qd;
-                }
-            }
-        })?;
-        fill(&cv, "cv", |s| {
-            for (chunk, bank) in s.chunks_mut(CHUNK).zip(banks) {
-                for (slot, o) in chunk.iter_mut().zip(bank.outputs(pv)) {
-                    *slot = o.cv;
-                }
-            }
-        })?;
+        drop((qu_rw, qd_rw, cv_rw));
         PyTuple::new(py, [qu.into_any(), qd.into_any(), cv.into_any()])
     }
 }

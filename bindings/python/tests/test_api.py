@@ -270,3 +270,17 @@ def test_check_some_outputs_and_tuples() -> None:
     with pytest.raises(plc_timers.TraceError) as e:
         plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], outputs=["CV"], pt=500)
     assert e.value.option == "outputs"
+
+
+def test_bank_output_that_is_an_input_fails_before_the_scan() -> None:
+    bank = plc_timers.TonBank(4)
+    inputs, pt = np.ones(4, np.bool_), np.full(4, 100, np.int32)
+    with pytest.raises(ValueError, match="cannot be written now"):
+        bank.scan(0, inputs, pt, out=(inputs, np.zeros(4, np.int32)))
+    assert bank.output(0).et == 0
+    q, et = bank.scan(50, inputs, pt)  # the failed call started nothing: this is the first start
+    assert et.tolist() == [0, 0, 0, 0]
+    counters = plc_timers.CounterBank(4)
+    with pytest.raises(ValueError, match="cannot be written now"):
+        counters.scan(pv=1, cu=inputs, out=(inputs, np.zeros(4, np.bool_), np.zeros(4, np.int16)))
+    assert counters.scan(pv=1)[2].tolist() == [0, 0, 0, 0]
