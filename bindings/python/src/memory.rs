@@ -15,6 +15,11 @@ use crate::blocks::{PyS5CounterOutput, PyS5Output};
 /// The sizes an area may have.
 const SIZES: [usize; 6] = [64, 128, 256, 512, 1024, 2048];
 
+/// An operand number: a whole number 0 and up (the area says which exist).
+fn operand(obj: &Bound<'_, PyAny>) -> PyResult<usize> {
+    args::int_in::<usize>(obj, "index", "an operand number, 0 and up (T 0, C 0, …)")
+}
+
 fn no_such(e: NoSuchOperand) -> PyErr {
     PyIndexError::new_err(e.to_string())
 }
@@ -149,7 +154,8 @@ impl PyTimerMemory {
     }
 
     /// `FR T index` with RLO `rlo`.
-    fn fr(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn fr(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(TimerArea, &mut self.area, m => m.fr(index, rlo)).map_err(no_such)
     }
 
@@ -157,33 +163,38 @@ impl PyTimerMemory {
     /// `rlo` and the time value `tv` in ACCU 1 (a literal, a word or an `S5Time`).
     fn start(
         &mut self,
-        index: usize,
+        index: &Bound<'_, PyAny>,
         kind: &str,
         rlo: bool,
         tv: &Bound<'_, PyAny>,
     ) -> PyResult<()> {
+        let index = operand(index)?;
         let kind = s5_kind(kind)?;
         let tv = args::s5time(tv, "tv")?;
         with!(TimerArea, &mut self.area, m => m.start(index, kind, rlo, tv)).map_err(no_such)
     }
 
     /// `R T index` with RLO `rlo`.
-    fn reset(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn reset(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(TimerArea, &mut self.area, m => m.reset(index, rlo)).map_err(no_such)
     }
 
     /// `L T index`: the remaining value in binary (units of the base).
-    fn load(&self, index: usize) -> PyResult<u16> {
+    fn load(&self, index: &Bound<'_, PyAny>) -> PyResult<u16> {
+        let index = operand(index)?;
         with!(TimerArea, &self.area, m => m.load(index)).map_err(no_such)
     }
 
     /// `LC T index`: the remaining value in BCD with the base in bits 13-12.
-    fn load_bcd(&self, index: usize) -> PyResult<u16> {
+    fn load_bcd(&self, index: &Bound<'_, PyAny>) -> PyResult<u16> {
+        let index = operand(index)?;
         with!(TimerArea, &self.area, m => m.load_bcd(index)).map_err(no_such)
     }
 
     /// `A T index`: the timer status.
-    fn status(&self, index: usize) -> PyResult<bool> {
+    fn status(&self, index: &Bound<'_, PyAny>) -> PyResult<bool> {
+        let index = operand(index)?;
         with!(TimerArea, &self.area, m => m.status(index)).map_err(no_such)
     }
 
@@ -193,7 +204,7 @@ impl PyTimerMemory {
     #[allow(clippy::too_many_arguments)]
     fn call(
         &mut self,
-        index: usize,
+        index: &Bound<'_, PyAny>,
         kind: &str,
         now_ms: &Bound<'_, PyAny>,
         s: bool,
@@ -201,6 +212,7 @@ impl PyTimerMemory {
         fr: bool,
         tv: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyS5Output> {
+        let index = operand(index)?;
         let kind = s5_kind(kind)?;
         let now = args::now_ms(now_ms)?;
         forward(now, self.last)?;
@@ -219,7 +231,8 @@ impl PyTimerMemory {
     }
 
     /// The outputs of timer `index` (Q, BI, BCD) without a tick.
-    fn output(&self, index: usize) -> PyResult<PyS5Output> {
+    fn output(&self, index: &Bound<'_, PyAny>) -> PyResult<PyS5Output> {
+        let index = operand(index)?;
         let state = with!(TimerArea, &self.area, m => m.get(index)).map_err(no_such)?;
         Ok(state.output().into())
     }
@@ -261,44 +274,52 @@ impl PyCounterMemory {
     }
 
     /// `FR C index` with RLO `rlo`.
-    fn fr(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn fr(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(CounterArea, &mut self.area, m => m.fr(index, rlo)).map_err(no_such)
     }
 
     /// `CU C index` with RLO `rlo`: counts up on a rising RLO.
-    fn cu(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn cu(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(CounterArea, &mut self.area, m => m.cu(index, rlo)).map_err(no_such)
     }
 
     /// `CD C index` with RLO `rlo`: counts down on a rising RLO.
-    fn cd(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn cd(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(CounterArea, &mut self.area, m => m.cd(index, rlo)).map_err(no_such)
     }
 
     /// `S C index` with RLO `rlo` and the preset `pv` in ACCU 1 (a literal, an int 0..=999 or
     /// a `CounterPreset`).
-    fn set(&mut self, index: usize, rlo: bool, pv: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set(&mut self, index: &Bound<'_, PyAny>, rlo: bool, pv: &Bound<'_, PyAny>) -> PyResult<()> {
+        let index = operand(index)?;
         let pv = args::counter_preset(pv, "pv")?;
         with!(CounterArea, &mut self.area, m => m.set(index, rlo, pv)).map_err(no_such)
     }
 
     /// `R C index` with RLO `rlo`.
-    fn reset(&mut self, index: usize, rlo: bool) -> PyResult<()> {
+    fn reset(&mut self, index: &Bound<'_, PyAny>, rlo: bool) -> PyResult<()> {
+        let index = operand(index)?;
         with!(CounterArea, &mut self.area, m => m.reset(index, rlo)).map_err(no_such)
     }
 
     /// `L C index`: the count in binary.
-    fn load(&self, index: usize) -> PyResult<u16> {
+    fn load(&self, index: &Bound<'_, PyAny>) -> PyResult<u16> {
+        let index = operand(index)?;
         with!(CounterArea, &self.area, m => m.load(index)).map_err(no_such)
     }
 
     /// `LC C index`: the count in BCD.
-    fn load_bcd(&self, index: usize) -> PyResult<u16> {
+    fn load_bcd(&self, index: &Bound<'_, PyAny>) -> PyResult<u16> {
+        let index = operand(index)?;
         with!(CounterArea, &self.area, m => m.load_bcd(index)).map_err(no_such)
     }
 
     /// `A C index`: the counter status (count != 0).
-    fn status(&self, index: usize) -> PyResult<bool> {
+    fn status(&self, index: &Bound<'_, PyAny>) -> PyResult<bool> {
+        let index = operand(index)?;
         with!(CounterArea, &self.area, m => m.status(index)).map_err(no_such)
     }
 
@@ -307,7 +328,7 @@ impl PyCounterMemory {
     #[allow(clippy::too_many_arguments)]
     fn call(
         &mut self,
-        index: usize,
+        index: &Bound<'_, PyAny>,
         kind: &str,
         cu: bool,
         cd: bool,
@@ -316,6 +337,7 @@ impl PyCounterMemory {
         fr: bool,
         pv: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyS5CounterOutput> {
+        let index = operand(index)?;
         let block = block_of(kind, Family::S5Counter, "kind")?;
         let kind: S5CounterKind = match block.kind() {
             Kind::S5Counter(k) => k,
@@ -356,7 +378,8 @@ impl PyCounterMemory {
     }
 
     /// The outputs of counter `index` (Q, CV, CV_BCD).
-    fn output(&self, index: usize) -> PyResult<PyS5CounterOutput> {
+    fn output(&self, index: &Bound<'_, PyAny>) -> PyResult<PyS5CounterOutput> {
+        let index = operand(index)?;
         let state = with!(CounterArea, &self.area, m => m.get(index)).map_err(no_such)?;
         Ok(state.output().into())
     }

@@ -284,3 +284,13 @@ def test_bank_output_that_is_an_input_fails_before_the_scan() -> None:
     with pytest.raises(ValueError, match="cannot be written now"):
         counters.scan(pv=1, cu=inputs, out=(inputs, np.zeros(4, np.bool_), np.zeros(4, np.int16)))
     assert counters.scan(pv=1)[2].tolist() == [0, 0, 0, 0]
+
+
+def test_operand_numbers_are_checked() -> None:
+    area = plc_timers.CounterMemory(64)
+    with pytest.raises(ValueError, match="index is an operand number, 0 and up"):
+        area.load(-1)
+    with pytest.raises(TypeError, match="index is an operand number"):
+        area.load("C 1")  # type: ignore[arg-type]
+    with pytest.raises(IndexError, match="no counter C 64: this area has C 0 to C 63"):
+        area.cu(64, True)
