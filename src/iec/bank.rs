@@ -109,11 +109,11 @@ impl<const N: usize> TonBank<N> {
 
     /// ET of timer `i` (`i < N`): derived for a running timer (see the representation).
     fn et_of(&self, i: usize) -> u32 {
-        if self.flags[i] & (RUNNING | EXPLICIT) == RUNNING {
-            self.now.wrapping_sub(self.start[i])
-        } else {
-            self.et[i]
-        }
+        // A select by mask, not a branch: read in bulk ([`TonBank::outputs`]), RUNNING varies
+        // from timer to timer and a branch would mispredict on it; the mask form also lets the
+        // loop over the timers vectorize.
+        let derived = u32::from(self.flags[i] & (RUNNING | EXPLICIT) == RUNNING).wrapping_neg();
+        (self.now.wrapping_sub(self.start[i]) & derived) | (self.et[i] & !derived)
     }
 
     /// Timer `i`'s flags, or the error naming the bank's range.
@@ -135,6 +135,27 @@ impl<const N: usize> TonBank<N> {
             q: self.flags[i] & Q != 0,
             et: self.et_of(i),
         })
+    }
+
+    /// The outputs of every timer written into `q` and `et` (timer `i` at index `i`), equal to
+    /// [`TonBank::outputs`]: for a caller that copies them into arrays of its own (the Python
+    /// bank's numpy arrays), one straight-line pass that vectorizes.
+    ///
+    /// ```
+    /// use plc_timers::iec::TonBank;
+    /// use plc_timers::time::{CpuTime, Time};
+    /// let mut bank = TonBank::<2>::new();
+    /// bank.scan(CpuTime::from_millis(0), &[true, false], &[Time::from_millis(100); 2]);
+    /// bank.scan(CpuTime::from_millis(40), &[true, false], &[Time::from_millis(100); 2]);
+    /// let (mut q, mut et) = ([true; 2], [7; 2]);
+    /// bank.outputs_into(&mut q, &mut et);
+    /// assert_eq!((q, et), ([false, false], [40, 0]));
+    /// ```
+    pub fn outputs_into(&self, q: &mut [bool; N], et: &mut [u32; N]) {
+        for i in 0..N {
+            q[i] = self.flags[i] & Q != 0;
+            et[i] = self.et_of(i);
+        }
     }
 
     /// The state of timer `i` as the reference names it.
@@ -407,6 +428,12 @@ mod tests {
                 .iter()
                 .enumerate()
                 .all(|(i, o)| Ok(*o) == bank.output(i)));
+            let (mut q, mut et) = ([false; N], [0u32; N]);
+            bank.outputs_into(&mut q, &mut et);
+            assert!(outs
+                .iter()
+                .enumerate()
+                .all(|(i, o)| (o.q, o.et) == (q[i], et[i])));
         }
     }
 

@@ -1,0 +1,237 @@
+//! Arguments from Python, checked: each reader turns a Python object into a core value or into a
+//! Python exception that says what was wrong and what is allowed.
+
+use plc_timers::catalog::{Block, Family};
+use plc_timers::counter::s5::{CounterPreset, CounterPresetError};
+use plc_timers::time::{CpuTime, LiteralError, LiteralErrorKind, S5Time, Time};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyString};
+
+use crate::literals::{PyCounterPreset, PyS5Time, PyTime};
+
+/// The Python type name of `obj`, for messages.
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type()
+        .name()
+        .map(|n| n.to_string())
+        .unwrap_or_else(|_| "?".to_string())
+}
+
+/// `obj`'s `repr()`, cut to 60 characters, for messages.
+pub fn shown(obj: &Bound<'_, PyAny>) -> String {
+    let text = obj
+        .repr()
+        .map(|r| r.to_string())
+        .unwrap_or_else(|_| "?".to_string());
+    if text.chars().count() > 60 {
+        let mut cut: String = text.chars().take(60).collect();
+        cut.push('…');
+        cut
+    } else {
+        text
+    }
+}
+
+/// The name of a [`LiteralErrorKind`] variant, as Python sees it in `LiteralError.kind`.
+fn kind_name(kind: LiteralErrorKind) -> &'static str {
+    match kind {
+        LiteralErrorKind::Empty => "Empty",
+        LiteralErrorKind::Prefix => "Prefix",
+        LiteralErrorKind::NoComponents => "NoComponents",
+        LiteralErrorKind::MissingUnit => "MissingUnit",
+        LiteralErrorKind::UnknownUnit => "UnknownUnit",
+        LiteralErrorKind::MissingDigits => "MissingDigits",
+        LiteralErrorKind::UnexpectedChar(_) => "UnexpectedChar",
+        LiteralErrorKind::UnitOrder(_) => "UnitOrder",
+        LiteralErrorKind::ComponentRange(..) => "ComponentRange",
+        LiteralErrorKind::Fraction => "Fraction",
+        LiteralErrorKind::Overflow => "Overflow",
+        LiteralErrorKind::HexDigits => "HexDigits",
+        LiteralErrorKind::BcdDigit(_) => "BcdDigit",
+        LiteralErrorKind::Negative => "Negative",
+        LiteralErrorKind::OutOfRange => "OutOfRange",
+        // The enum is non-exhaustive: a kind added later still gets a name.
+        _ => "Other",
+    }
+}
+
+/// A `plc_timers.LiteralError` with its attributes.
+fn literal_exception(
+    py: Python<'_>,
+    message: String,
+    literal: &str,
+    kind: &str,
+    position: Option<usize>,
+) -> PyErr {
+    let err = crate::LiteralError::new_err(message);
+    let value = err.value(py);
+    // Setting attributes on a fresh exception instance cannot fail short of memory exhaustion;
+    // if it did, the exception without them is still the right one to raise.
+    let _ = value.setattr("literal", literal);
+    let _ = value.setattr("kind", kind);
+    let _ = value.setattr("position", position);
+    err
+}
+
+/// The core's literal error as a `plc_timers.LiteralError`.
+pub fn literal_error(py: Python<'_>, e: LiteralError) -> PyErr {
+    literal_exception(
+        py,
+        e.to_string(),
+        e.what.name(),
+        kind_name(e.kind),
+        Some(e.position),
+    )
+}
+
+/// The core's counter preset error as a `plc_timers.LiteralError` (no position: its errors
+/// concern the whole text).
+pub fn preset_error(py: Python<'_>, e: CounterPresetError) -> PyErr {
+    let kind = match e {
+        CounterPresetError::Syntax => "Syntax",
+        CounterPresetError::OutOfRange(_) => "OutOfRange",
+        CounterPresetError::BcdDigit(_) => "BcdDigit",
+        _ => "Other",
+    };
+    literal_exception(py, e.to_string(), "C#", kind, None)
+}
+
+/// A whole number that fits `T`, or a `ValueError`/`TypeError` naming `what` and `allowed`.
+pub fn int_in<T: TryFrom<i128>>(obj: &Bound<'_, PyAny>, what: &str, allowed: &str) -> PyResult<T> {
+    if obj.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is {allowed}; got the bool {}",
+            shown(obj)
+        )));
+    }
+    let Ok(v) = obj.extract::<i128>() else {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is {allowed}; got {} ({})",
+            shown(obj),
+            type_name(obj)
+        )));
+    };
+    T::try_from(v).map_err(|_| PyValueError::new_err(format!("{what} is {allowed}; got {v}")))
+}
+
+/// The CPU time of a call: a whole number of milliseconds, 0..=2**64-1.
+pub fn now_ms(obj: &Bound<'_, PyAny>) -> PyResult<CpuTime> {
+    int_in::<u64>(
+        obj,
+        "now_ms",
+        "the CPU time in whole milliseconds, 0..=18446744073709551615",
+    )
+    .map(CpuTime::from_millis)
+}
+
+/// Rejects a CPU time before the previous call's: time must not decrease.
+pub fn forward(now: CpuTime, last: Option<CpuTime>) -> PyResult<()> {
+    match last {
+        Some(last) if now < last => Err(PyValueError::new_err(format!(
+            "now_ms goes backwards: {} after {}; the CPU time must not decrease",
+            now.as_millis(),
+            last.as_millis()
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// A boolean input: a Python `bool` or `numpy.bool_`.
+pub fn boolean(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<bool> {
+    obj.extract::<bool>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what} is a boolean (True or False); got {} ({})",
+            shown(obj),
+            type_name(obj)
+        ))
+    })
+}
+
+/// An S5TIME: a literal (`"S5T#5S"`, `"W#16#2050"`), a word (int 0..=65535, time base in bits
+/// 13-12, three BCD digits) or an `S5Time`.
+pub fn s5time(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<S5Time> {
+    let py = obj.py();
+    if let Ok(t) = obj.cast::<PyS5Time>() {
+        return Ok(t.get().0);
+    }
+    if let Ok(text) = obj.cast::<PyString>() {
+        let text = text.to_cow()?;
+        return S5Time::parse(text.trim()).map_err(|e| literal_error(py, e));
+    }
+    if obj.is_instance_of::<PyBool>() || obj.extract::<i128>().is_err() {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is an S5TIME: a literal such as \"S5T#5S\" or \"W#16#2050\", a word \
+             (int 0..=65535) or an S5Time; got {} ({})",
+            shown(obj),
+            type_name(obj)
+        )));
+    }
+    let word = int_in::<u16>(obj, what, "an S5TIME word, 0..=65535")?;
+    S5Time::from_word(word).map_err(|e| PyValueError::new_err(format!("{what}: {e}")))
+}
+
+/// A TIME: a literal (`"T#500ms"`, `"T#-5S"`, whole milliseconds as text), an int of
+/// milliseconds (-2**31..=2**31-1) or a `Time`.
+pub fn time(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
+    let py = obj.py();
+    if let Ok(t) = obj.cast::<PyTime>() {
+        return Ok(t.get().0);
+    }
+    if let Ok(text) = obj.cast::<PyString>() {
+        let text = text.to_cow()?;
+        return Time::parse(text.trim()).map_err(|e| literal_error(py, e));
+    }
+    if obj.is_instance_of::<PyBool>() || obj.extract::<i128>().is_err() {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is a TIME: a literal such as \"T#500ms\", an int of milliseconds \
+             (-2147483648..=2147483647) or a Time; got {} ({})",
+            shown(obj),
+            type_name(obj)
+        )));
+    }
+    int_in::<i32>(
+        obj,
+        what,
+        "a TIME in milliseconds, -2147483648..=2147483647",
+    )
+    .map(Time::from_millis)
+}
+
+/// An S5 counter preset: a literal (`"C#5"`, `"5"`, `"W#16#0005"`), an int 0..=999 or a
+/// `CounterPreset`.
+pub fn counter_preset(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<CounterPreset> {
+    let py = obj.py();
+    if let Ok(p) = obj.cast::<PyCounterPreset>() {
+        return Ok(p.get().0);
+    }
+    if let Ok(text) = obj.cast::<PyString>() {
+        let text = text.to_cow()?;
+        return CounterPreset::parse(text.trim()).map_err(|e| preset_error(py, e));
+    }
+    let n = int_in::<u16>(
+        obj,
+        what,
+        "a counter preset: \"C#0\" to \"C#999\", an int 0..=999 or a CounterPreset",
+    )?;
+    CounterPreset::new(n).map_err(|e| preset_error(py, e))
+}
+
+/// The block named `name` (a catalog name or alias, ASCII case ignored) of family `family`.
+pub fn block_of(name: &str, family: Family, what: &str) -> PyResult<Block> {
+    let names = || {
+        Block::ALL
+            .into_iter()
+            .filter(|b| b.family() == family)
+            .map(Block::name)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    match Block::lookup(name.trim()) {
+        Some(b) if b.family() == family => Ok(b),
+        _ => Err(PyValueError::new_err(format!(
+            "{what} `{name}` is not one of {}",
+            names()
+        ))),
+    }
+}
