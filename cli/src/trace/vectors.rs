@@ -440,7 +440,7 @@ fn fr(block: Block, kind: PresetKind) -> Trace {
 fn decisions(block: Block) -> Option<Trace> {
     let mut trace = Trace::new(block);
     // (t_ms, inputs at 1, preset)
-    let mut rows = |rows: &[(u64, &[&str], &str)]| {
+    let mut rows = |rows: &[(u64, &[Port], &str)]| {
         for &(t, on, preset) in rows {
             trace.row(t, on, preset);
         }
@@ -450,80 +450,80 @@ fn decisions(block: Block) -> Option<Trace> {
         Block::SPulse => rows(&[
             // S5TMR-R-01 (s5.md D3): R on a timer stopped by S clears the kept value: BI 6 -> 0.
             (0, &[], TV),
-            (10, &["S"], TV),
+            (10, &[S], TV),
             (50, &[], TV),
             (60, &[], TV),
-            (70, &["R"], TV),
+            (70, &[R], TV),
             (80, &[], TV),
             // S5TMR-LOAD-01: after R both loads are 0, the base too (awlsim's LC keeps
             // W#16#2000 here).
-            (100, &["S"], "W#16#2002"),
-            (1100, &["S"], "W#16#2002"),
-            (1200, &["S", "R"], "W#16#2002"),
+            (100, &[S], "W#16#2002"),
+            (1100, &[S], "W#16#2002"),
+            (1200, &[S, R], "W#16#2002"),
             (1300, &[], "W#16#2002"),
             // S5TMR-LOAD-01: BCD is the BCD of BI on the 10 s base (15.119 s left in awlsim's
             // clock, where its L gives 2 and its LC W#16#3001).
-            (1400, &["S"], "W#16#3002"),
-            (6281, &["S"], "W#16#3002"),
-            (6290, &["R"], "W#16#3002"),
+            (1400, &[S], "W#16#3002"),
+            (6281, &[S], "W#16#3002"),
+            (6290, &[R], "W#16#3002"),
         ]),
         Block::SPext => rows(&[
             // S5TMR-R-01 (s5.md D3): a run-out S_PEXT keeps its base in BCD until R clears it.
             (0, &[], "W#16#2002"),
-            (10, &["S"], "W#16#2002"),
+            (10, &[S], "W#16#2002"),
             (20, &[], "W#16#2002"),
             (3000, &[], "W#16#2002"),
-            (3010, &["R"], "W#16#2002"),
+            (3010, &[R], "W#16#2002"),
             (3020, &[], "W#16#2002"),
         ]),
         Block::SOdt => rows(&[
             // SD-Q-01: restarted by FR with S held after expiry, Q = 0 while the new time runs
             // (awlsim keeps Q = 1).
             (0, &[], TV),
-            (10, &["S"], TV),
-            (200, &["S"], TV),
-            (210, &["S", "FR"], TV),
-            (260, &["S"], TV),
-            (400, &["S"], TV),
+            (10, &[S], TV),
+            (200, &[S], TV),
+            (210, &[S, Fr], TV),
+            (260, &[S], TV),
+            (400, &[S], TV),
         ]),
         Block::SOdts => rows(&[
             // SS-Q-01: run out with no execution in between, restarted by a rising S: Q stays
             // 1 (awlsim shows Q = 0 until the new time runs out).
             (0, &[], TV),
-            (10, &["S"], TV),
+            (10, &[S], TV),
             (20, &[], TV),
-            (500, &["S"], TV),
-            (550, &["S"], TV),
-            (700, &["S"], TV),
+            (500, &[S], TV),
+            (550, &[S], TV),
+            (700, &[S], TV),
             // The same through FR with S held.
-            (710, &["S", "R"], TV),
+            (710, &[S, R], TV),
             (720, &[], TV),
-            (730, &["S"], TV),
-            (1000, &["S", "FR"], TV),
-            (1050, &["S"], TV),
-            (1060, &["R"], TV),
+            (730, &[S], TV),
+            (1000, &[S, Fr], TV),
+            (1050, &[S], TV),
+            (1060, &[R], TV),
         ]),
         Block::SOffdt => rows(&[
             // SF-Q-01 (s5.md D1): R with S held: Q stays 0 until S falls.
             (0, &[], TV),
-            (10, &["S"], TV),
-            (20, &["S", "R"], TV),
-            (30, &["S"], TV),
+            (10, &[S], TV),
+            (20, &[S, R], TV),
+            (30, &[S], TV),
             (40, &[], TV),
             (200, &[], TV),
             // SF-Q-01 (s5.md D2): a rising S while running stops the time, Q = 1, value kept.
-            (210, &["S"], TV),
+            (210, &[S], TV),
             (220, &[], TV),
-            (250, &["S"], TV),
-            (260, &["S"], TV),
-            (270, &["S", "R"], TV),
+            (250, &[S], TV),
+            (260, &[S], TV),
+            (270, &[S, R], TV),
             (280, &[], TV),
             (400, &[], TV),
         ]),
         Block::Tp => rows(&[
             // IEC-EXPIRY-01: the pulse ends in the call where ET reaches PT.
             (0, &[], "T#20MS"),
-            (10, &["IN"], "T#20MS"),
+            (10, &[In], "T#20MS"),
             (29, &[], "T#20MS"),
             (30, &[], "T#20MS"),
             (31, &[], "T#20MS"),
@@ -531,66 +531,66 @@ fn decisions(block: Block) -> Option<Trace> {
         Block::Ton => rows(&[
             // IEC-EXPIRY-01: Q rises in the call where ET reaches PT, not one call later.
             (0, &[], "T#20MS"),
-            (10, &["IN"], "T#20MS"),
-            (29, &["IN"], "T#20MS"),
-            (30, &["IN"], "T#20MS"),
+            (10, &[In], "T#20MS"),
+            (29, &[In], "T#20MS"),
+            (30, &[In], "T#20MS"),
             (31, &[], "T#20MS"),
         ]),
         Block::Tof => rows(&[
             // IEC-EXPIRY-01: Q falls in the call where ET reaches PT.
-            (0, &["IN"], "T#20MS"),
+            (0, &[In], "T#20MS"),
             (10, &[], "T#20MS"),
             (29, &[], "T#20MS"),
             (30, &[], "T#20MS"),
-            (31, &["IN"], "T#20MS"),
+            (31, &[In], "T#20MS"),
         ]),
         Block::Tonr => rows(&[
             // IEC-EXPIRY-01: the accumulated time reaches PT: Q = 1 at ET = PT.
             (0, &[], "T#20MS"),
-            (10, &["IN"], "T#20MS"),
+            (10, &[In], "T#20MS"),
             (20, &[], "T#20MS"),
-            (30, &["IN"], "T#20MS"),
-            (39, &["IN"], "T#20MS"),
-            (40, &["IN"], "T#20MS"),
+            (30, &[In], "T#20MS"),
+            (39, &[In], "T#20MS"),
+            (40, &[In], "T#20MS"),
             // TONR-RESUME-01: after R is released with IN held, it times again from 0.
-            (50, &["IN", "R"], "T#20MS"),
-            (60, &["IN", "R"], "T#20MS"),
-            (70, &["IN"], "T#20MS"),
-            (80, &["IN"], "T#20MS"),
-            (90, &["IN"], "T#20MS"),
+            (50, &[In, R], "T#20MS"),
+            (60, &[In, R], "T#20MS"),
+            (70, &[In], "T#20MS"),
+            (80, &[In], "T#20MS"),
+            (90, &[In], "T#20MS"),
             (100, &[], "T#20MS"),
         ]),
         Block::Ctu | Block::Ctd | Block::Ctud => {
             // CNT-PRIO-01: R and LD act as levels: edges at CU and CD while one is held do not
             // count; releasing it with the count input held does not count (CNT-EDGE-01); R
             // wins over LD.
-            let has = |n: &str| block.input_index(n).is_some();
-            if has("R") {
+            let has = |p: Port| block.has_input(p);
+            if has(R) {
                 rows(&[
-                    (0, &["CU"], "3"),
+                    (0, &[Cu], "3"),
                     (0, &[], "3"),
-                    (0, &["R"], "3"),
-                    (0, &["R", "CU"], "3"),
-                    (0, &["R"], "3"),
-                    (0, &["R", "CU"], "3"),
-                    (0, &["CU"], "3"),
+                    (0, &[R], "3"),
+                    (0, &[R, Cu], "3"),
+                    (0, &[R], "3"),
+                    (0, &[R, Cu], "3"),
+                    (0, &[Cu], "3"),
                     (0, &[], "3"),
-                    (0, &["CU"], "3"),
+                    (0, &[Cu], "3"),
                 ]);
             }
-            if has("LD") {
+            if has(Ld) {
                 rows(&[
-                    (0, &["LD"], "3"),
-                    (0, &["LD", "CD"], "3"),
-                    (0, &["LD"], "3"),
-                    (0, &["LD", "CD"], "3"),
-                    (0, &["CD"], "3"),
+                    (0, &[Ld], "3"),
+                    (0, &[Ld, Cd], "3"),
+                    (0, &[Ld], "3"),
+                    (0, &[Ld, Cd], "3"),
+                    (0, &[Cd], "3"),
                     (0, &[], "3"),
-                    (0, &["CD"], "3"),
+                    (0, &[Cd], "3"),
                 ]);
             }
-            if has("R") && has("LD") {
-                rows(&[(0, &["R", "LD"], "3"), (0, &["LD"], "3"), (0, &[], "3")]);
+            if has(R) && has(Ld) {
+                rows(&[(0, &[R, Ld], "3"), (0, &[Ld], "3"), (0, &[], "3")]);
             }
         }
         Block::SCu | Block::SCd | Block::SCud => return None,
