@@ -1229,7 +1229,7 @@ pub fn prop_struct(state: IecState<u32>) {
 /// The rule driver on the 4-bit clock: every valid state with PT in {0, 1, 2, 5, 14, 15} (every
 /// START, ET <= PT, kind, IN, running, Q) x every operation of [`all_ops_u4`]. Small scope:
 /// the rules compare `now - START` modulo 16 with PT and 0, which every (START, now) pair of
-/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_rules_*`, one per kind) runs the same body on
+/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_*_rules`, one per kind) runs the same body on
 /// the 32-bit clock.
 // Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
 #[cfg(not(kani))]
@@ -1293,7 +1293,7 @@ fn exhaustive_u4_iec_rules() {
     check_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
 }
 
-/// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_rules_ton`; here
+/// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_ton_rules`; here
 /// every START x now x PT of a running TON, TP, TOF and TONR on `u8` (IEC-WRAP-01 at every
 /// wrap), with IN held.
 // Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
@@ -1364,10 +1364,10 @@ macro_rules! iec_rules_harness {
     };
 }
 
-iec_rules_harness!(kani_iec_rules_tp, IecKind::Tp);
-iec_rules_harness!(kani_iec_rules_ton, IecKind::Ton);
-iec_rules_harness!(kani_iec_rules_tof, IecKind::Tof);
-iec_rules_harness!(kani_iec_rules_tonr, IecKind::Tonr);
+iec_rules_harness!(kani_iec_tp_rules, IecKind::Tp);
+iec_rules_harness!(kani_iec_ton_rules, IecKind::Ton);
+iec_rules_harness!(kani_iec_tof_rules, IecKind::Tof);
+iec_rules_harness!(kani_iec_tonr_rules, IecKind::Tonr);
 
 /// IEC-WRAP-01 over gaps on the 32-bit clock: a TON started at `t0` and updated `gap` ms later
 /// shows ET = min(gap, PT) for every gap below 2^32 ms (2^31 and more included), and a gap of
