@@ -7,6 +7,7 @@
 //! unsigned, so both saturation ends and the sign of `CV <= 0`), and proptest and the Kani
 //! harnesses the wide types.
 
+use crate::cover::{check, check_eq};
 use plc_timers::counter::s5::{
     CounterMemory, CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps,
     S5CounterRef, S5CounterState, CV_MAX,
@@ -26,16 +27,16 @@ pub fn prop_step_equivalence<T: CounterInt>(
 ) {
     let mut r = CounterRef::from_state(state);
     let mut p = Counter::from_state(state);
-    assert_eq!(
+    check_eq!(
         p.state(),
         state,
         "CNT-EQUIV-01: abstraction inverts from_state"
     );
     let ro = r.call(kind, input);
     let po = p.call(kind, input);
-    assert_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
-    assert_eq!(p.cv(), po.cv, "CNT-EQUIV-01: CV accessor");
-    assert_eq!(
+    check_eq!(po, ro, "CNT-EQUIV-01 outputs {kind:?} {state:?} {input:?}");
+    check_eq!(p.cv(), po.cv, "CNT-EQUIV-01: CV accessor");
+    check_eq!(
         p.state(),
         r.state(),
         "CNT-EQUIV-01 state {kind:?} {state:?} {input:?}"
@@ -54,7 +55,7 @@ pub fn prop_rules<T: CounterInt>(
     let out = r.call(kind, input);
     let i = input.with_signals(kind.mask(input.signals()));
     let (before, after) = (state.cv.to_i128(), r.state().cv.to_i128());
-    assert_eq!(
+    check_eq!(
         (out.qu, out.qd, out.cv),
         (
             r.state().cv >= input.pv,
@@ -63,17 +64,17 @@ pub fn prop_rules<T: CounterInt>(
         ),
         "CNT-Q-01"
     );
-    assert_eq!(
+    check_eq!(
         (r.state().cu_prev, r.state().cd_prev),
         (i.cu, i.cd),
         "CNT-EDGE-01: edge memories take the inputs"
     );
     if i.r {
-        assert_eq!(r.state().cv, T::ZERO, "CNT-PRIO-01: R resets");
+        check_eq!(r.state().cv, T::ZERO, "CNT-PRIO-01: R resets");
         return;
     }
     if i.ld {
-        assert_eq!(r.state().cv, input.pv, "CNT-PRIO-01: LD loads PV");
+        check_eq!(r.state().cv, input.pv, "CNT-PRIO-01: LD loads PV");
         return;
     }
     let up = i.cu && !state.cu_prev;
@@ -83,8 +84,9 @@ pub fn prop_rules<T: CounterInt>(
         (false, true) => (before - 1).max(T::MIN.to_i128()),
         _ => before,
     };
-    assert_eq!(
-        after, expected,
+    check_eq!(
+        after,
+        expected,
         "CNT-SAT-01 / CNT-SIMUL-01 / CNT-EDGE-01 {kind:?} {state:?} {input:?}"
     );
 }
@@ -127,13 +129,13 @@ fn exhaustive_8bit<T: CounterInt>(values: impl Iterator<Item = T> + Clone) -> u6
 /// Exhaustive for SInt: 3 kinds x 256 CV x 4 edge memories x 256 PV x 16 inputs (12.6 million).
 #[test]
 fn exhaustive_sint() {
-    assert_eq!(exhaustive_8bit(i8::MIN..=i8::MAX), 3 * 256 * 4 * 256 * 16);
+    check_eq!(exhaustive_8bit(i8::MIN..=i8::MAX), 3 * 256 * 4 * 256 * 16);
 }
 
 /// Exhaustive for USInt: the same domain, unsigned (QD is CV = 0; saturation at 0 and 255).
 #[test]
 fn exhaustive_usint() {
-    assert_eq!(exhaustive_8bit(u8::MIN..=u8::MAX), 3 * 256 * 4 * 256 * 16);
+    check_eq!(exhaustive_8bit(u8::MIN..=u8::MAX), 3 * 256 * 4 * 256 * 16);
 }
 
 fn arb_wide<T: CounterInt + Arbitrary>() -> impl Strategy<Value = T> {
@@ -227,7 +229,7 @@ proptest! {
 pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
     let mut bank = CounterBank::<T, N>::new();
     let mut refs = [CounterRef::<T>::new(); N];
-    assert_eq!(
+    check_eq!(
         bank.get(N),
         Err(NoSuchOperand {
             operand: Operand::Counter,
@@ -261,8 +263,8 @@ pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
                     pv,
                 },
             );
-            assert_eq!(bank.get(i), Ok(c.state()), "CNT-EQUIV-01 bank counter {i}");
-            assert_eq!(bank.output(i, pv), Ok(o), "CNT-EQUIV-01 bank output {i}");
+            check_eq!(bank.get(i), Ok(c.state()), "CNT-EQUIV-01 bank counter {i}");
+            check_eq!(bank.output(i, pv), Ok(o), "CNT-EQUIV-01 bank output {i}");
         }
     }
 }
@@ -288,7 +290,7 @@ pub fn prop_s5_step_equivalence(
     let Some(word) = S5Counter::from_state(state) else {
         return false;
     };
-    assert_eq!(
+    check_eq!(
         word.state(),
         state,
         "CNT-EQUIV-01: abstraction inverts from_state"
@@ -297,21 +299,21 @@ pub fn prop_s5_step_equivalence(
     let ro = r.call(kind, input);
     let mut word = word;
     let wo = word.call(kind, input);
-    assert_eq!(
+    check_eq!(
         wo,
         word.output(),
         "CNT-EQUIV-01: call returns the word's outputs"
     );
-    assert_eq!(
+    check_eq!(
         word.state(),
         r.state(),
         "CNT-EQUIV-01 S5 {kind:?} {state:?} {input:?}"
     );
-    assert_eq!(word.output(), ro, "CNT-EQUIV-01 S5 outputs");
+    check_eq!(word.output(), ro, "CNT-EQUIV-01 S5 outputs");
     let mut area = CounterMemory::<2>::new();
-    assert_eq!(area.set_state(1, state), Ok(true));
-    assert_eq!(area.call(1, kind, input), Ok(ro), "CNT-EQUIV-01 S5 area");
-    assert_eq!(area.get(1), Ok(r.state()), "CNT-EQUIV-01 S5 area state");
+    check_eq!(area.set_state(1, state), Ok(true));
+    check_eq!(area.call(1, kind, input), Ok(ro), "CNT-EQUIV-01 S5 area");
+    check_eq!(area.get(1), Ok(r.state()), "CNT-EQUIV-01 S5 area state");
     true
 }
 
@@ -324,19 +326,19 @@ pub fn prop_s5_rules(kind: S5CounterKind, state: S5CounterState, input: S5Counte
     let mut r = S5CounterRef::from_state(state).expect("valid");
     let out = r.call(kind, input);
     let (_, _, s_prev) = s5_memories_after_fr(&state, input.fr);
-    assert!(out.cv <= CV_MAX, "SC-RANGE-01");
-    assert_eq!(
+    check!(out.cv <= CV_MAX, "SC-RANGE-01");
+    check_eq!(
         CounterPreset::from_bcd(out.cv_bcd).map(CounterPreset::value),
         Ok(out.cv),
         "SC-RANGE-01: CV_BCD"
     );
-    assert_eq!(out.q, out.cv != 0, "SC-Q-01");
+    check_eq!(out.q, out.cv != 0, "SC-Q-01");
     if input.r {
-        assert_eq!(out.cv, 0, "SC-PRIO-01: R resets");
+        check_eq!(out.cv, 0, "SC-PRIO-01: R resets");
     } else if input.s && !s_prev {
-        assert_eq!(out.cv, input.pv.value(), "SC-PRIO-01: a rising S sets PV");
+        check_eq!(out.cv, input.pv.value(), "SC-PRIO-01: a rising S sets PV");
     } else {
-        assert!(
+        check!(
             out.cv.abs_diff(state.cv) <= 1,
             "SC-SAT-01: counting moves CV by at most 1"
         );
@@ -379,7 +381,7 @@ fn exhaustive_s5_counters() {
             }
         }
     }
-    assert_eq!(checked, 2 * 3 * 1000 * 16 * presets.len() as u32 * 32);
+    check_eq!(checked, 2 * 3 * 1000 * 16 * presets.len() as u32 * 32);
 }
 
 /// One STL operation on an S5 counter: `FR`, `CU`, `CD`, `S` or `R C n` with its RLO.
@@ -427,15 +429,15 @@ pub fn prop_stl_operations(pv: CounterPreset, ops: &[StlOp]) {
                 area.reset(0, rlo)
             }
         };
-        assert_eq!(done, Ok(()), "counter 0 exists");
+        check_eq!(done, Ok(()), "counter 0 exists");
         let after = reference.state();
-        assert_eq!(
+        check_eq!(
             area.get(0),
             Ok(after),
             "SC-STL-01 area after operation {n} of {ops:?}"
         );
         let expected = after.output();
-        assert_eq!(
+        check_eq!(
             (area.load(0), area.load_bcd(0), area.status(0)),
             (Ok(expected.cv), Ok(expected.cv_bcd), Ok(expected.q)),
             "SC-STL-01 reads after operation {n} of {ops:?}"
@@ -459,8 +461,9 @@ pub fn prop_stl_operations(pv: CounterPreset, ops: &[StlOp]) {
                 _ => false,
             };
             let expect = if cleared { false } else { b[k] };
-            assert_eq!(
-                a[k], expect,
+            check_eq!(
+                a[k],
+                expect,
                 "SC-STL-01: memory {k} after {op:?} at {n} of {ops:?}"
             );
         }
@@ -471,32 +474,34 @@ pub fn prop_stl_operations(pv: CounterPreset, ops: &[StlOp]) {
 /// (100 000 sequences), with the presets 0, 1 and 999.
 #[test]
 fn exhaustive_stl_operations() {
-    const SYMBOLS: [StlOp; 10] = [
-        StlOp::Fr(false),
-        StlOp::Fr(true),
-        StlOp::Cu(false),
-        StlOp::Cu(true),
-        StlOp::Cd(false),
-        StlOp::Cd(true),
-        StlOp::S(false),
-        StlOp::S(true),
-        StlOp::R(false),
-        StlOp::R(true),
-    ];
-    let mut sequences = 0;
-    for pv in [0, 1, 999] {
-        let pv = CounterPreset::new(pv).expect("at most 999");
-        for mut code in 0..10usize.pow(5) {
-            let mut ops = [StlOp::Cu(false); 5];
-            for op in ops.iter_mut() {
-                *op = SYMBOLS[code % 10];
-                code /= 10;
+    crate::cover::check_ids(&["SC-STL-01"], || {
+        const SYMBOLS: [StlOp; 10] = [
+            StlOp::Fr(false),
+            StlOp::Fr(true),
+            StlOp::Cu(false),
+            StlOp::Cu(true),
+            StlOp::Cd(false),
+            StlOp::Cd(true),
+            StlOp::S(false),
+            StlOp::S(true),
+            StlOp::R(false),
+            StlOp::R(true),
+        ];
+        let mut sequences = 0;
+        for pv in [0, 1, 999] {
+            let pv = CounterPreset::new(pv).expect("at most 999");
+            for mut code in 0..10usize.pow(5) {
+                let mut ops = [StlOp::Cu(false); 5];
+                for op in ops.iter_mut() {
+                    *op = SYMBOLS[code % 10];
+                    code /= 10;
+                }
+                prop_stl_operations(pv, &ops);
+                sequences += 1;
             }
-            prop_stl_operations(pv, &ops);
-            sequences += 1;
         }
-    }
-    assert_eq!(sequences, 3 * 100_000);
+        check_eq!(sequences, 3 * 100_000);
+    });
 }
 
 /// SC-BCD-01, exhaustive over all 65 536 words: a preset word is accepted exactly when it is
@@ -509,15 +514,69 @@ fn exhaustive_s5_preset_words() {
         let valid = digits[0] == 0 && digits[1..].iter().all(|&d| d <= 9);
         match CounterPreset::from_bcd(w) {
             Ok(p) => {
-                assert!(valid, "SC-BCD-01: W#16#{w:04X} accepted");
-                assert_eq!(p.value(), digits[1] * 100 + digits[2] * 10 + digits[3]);
-                assert_eq!(p.to_bcd(), w);
+                check!(valid, "SC-BCD-01: W#16#{w:04X} accepted");
+                check_eq!(p.value(), digits[1] * 100 + digits[2] * 10 + digits[3]);
+                check_eq!(p.to_bcd(), w);
                 accepted += 1;
             }
-            Err(_) => assert!(!valid, "SC-BCD-01: W#16#{w:04X} rejected"),
+            Err(_) => check!(!valid, "SC-BCD-01: W#16#{w:04X} rejected"),
         }
     }
-    assert_eq!(accepted, 1000);
+    check_eq!(accepted, 1000);
+}
+
+/// SC-BCD-01 in text form: `C#n` and the plain number `n` are the preset `n` exactly when
+/// `n <= 999`; above, the error is `OutOfRange(n)` (the value saturated at `u32::MAX`), with or
+/// without blanks around; `C#`, a sign or another character is a syntax error.
+pub fn prop_preset_text(n: u64) {
+    use plc_timers::counter::s5::CounterPresetError;
+    let expected = if n <= 999 {
+        Ok(u16::try_from(n).expect("at most 999"))
+    } else {
+        Err(CounterPresetError::OutOfRange(
+            u32::try_from(n).unwrap_or(u32::MAX),
+        ))
+    };
+    for text in [
+        format!("C#{n}"),
+        format!("c#{n}"),
+        format!("{n}"),
+        format!(" C#{n} "),
+    ] {
+        check_eq!(
+            CounterPreset::parse(&text).map(CounterPreset::value),
+            expected,
+            "SC-BCD-01: {text:?} is C#0..C#999 or 0..999; above 999 it is out of range"
+        );
+    }
+    for bad in [
+        format!("C#-{n}"),
+        format!("C#+{n}"),
+        format!("C#{n}x"),
+        String::from("C#"),
+    ] {
+        check_eq!(
+            CounterPreset::parse(&bad),
+            Err(CounterPresetError::Syntax),
+            "SC-BCD-01: {bad:?} is not a preset"
+        );
+    }
+}
+
+/// SC-BCD-01 in text form over 0..=100 000 and the ends of `u32` and beyond.
+#[test]
+fn exhaustive_s5_preset_texts() {
+    crate::cover::check_ids(&["SC-BCD-01"], || {
+        (0..=100_000).for_each(prop_preset_text);
+        for n in [
+            u64::from(u32::MAX) - 1,
+            u64::from(u32::MAX),
+            u64::from(u32::MAX) + 1,
+            u64::MAX,
+        ] {
+            prop_preset_text(n);
+        }
+    });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -547,7 +606,7 @@ fn iec_counter_impls<T: CounterInt>(
     v.push(("packed", p.state(), o));
     if kind == CounterKind::Ctud {
         let mut bank = CounterBank::<T, 1>::new();
-        assert_eq!(bank.set_state(0, st), Ok(()));
+        check_eq!(bank.set_state(0, st), Ok(()));
         bank.scan(
             &BankInputs {
                 cu: &[i.cu],
@@ -597,45 +656,47 @@ pub fn prop_iec_counter_rules<T: CounterInt>(
             .iter()
             .find(|(n, _, _)| *n == name)
             .expect("same impl");
-        assert_eq!(
+        check_eq!(
             (post, out),
             (same.1, same.2),
             "CNT-INPUTS-01: {name}: {kind:?} ignores the inputs it does not have"
         );
-        assert_eq!(
+        check_eq!(
             (post.cu_prev, post.cd_prev),
             (cu, cd),
             "CNT-EDGE-01: {name}: the edge memories take the inputs on every call (also under R, LD)"
         );
         let after = post.cv.to_i128();
         if r {
-            assert_eq!(after, 0, "CNT-PRIO-01: {name}: R = 1 gives CV = 0");
+            check_eq!(after, 0, "CNT-PRIO-01: {name}: R = 1 gives CV = 0");
         } else if ld {
-            assert_eq!(
-                post.cv, i.pv,
+            check_eq!(
+                post.cv,
+                i.pv,
                 "CNT-PRIO-01: {name}: LD = 1 (R = 0) gives CV = PV"
             );
         } else if up && down {
-            assert_eq!(
-                after, cv,
+            check_eq!(
+                after,
+                cv,
                 "CNT-SIMUL-01: {name}: CU and CD rising together leave CV"
             );
         } else if up {
-            assert_eq!(
+            check_eq!(
                 after,
                 (cv + 1).min(max),
                 "CNT-SAT-01: {name}: counting up stops at MAX"
             );
         } else if down {
-            assert_eq!(
+            check_eq!(
                 after,
                 (cv - 1).max(min),
                 "CNT-SAT-01: {name}: counting down stops at MIN"
             );
         } else {
-            assert_eq!(after, cv, "CNT-EDGE-01: {name}: no rising edge, no count");
+            check_eq!(after, cv, "CNT-EDGE-01: {name}: no rising edge, no count");
         }
-        assert_eq!(
+        check_eq!(
             (out.qu, out.qd, out.cv),
             (post.cv >= i.pv, post.cv <= T::ZERO, post.cv),
             "CNT-Q-01: {name}: QU = CV >= PV, QD = CV <= 0"
@@ -653,60 +714,74 @@ pub fn prop_iec_counter_rules<T: CounterInt>(
 /// Exhaustive on the 8-bit types: every kind x CV x edge memories x PV in {MIN, -1, 0, 1, MAX}
 /// x inputs. Small scope: the rules compare CV with MIN, MAX and PV and 0; at 8 bits every such
 /// case occurs, and the code is the same generic code as at 64 bits (Kani: `kani_counter_*`).
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn exhaustive_counter_rules_8bit() {
-    crate::cover::check(|| {
-        for kind in CounterKind::ALL {
-            for e in 0..4u8 {
-                for bits in 0..16u8 {
-                    for cv in i8::MIN..=i8::MAX {
-                        for pv in [i8::MIN, -1, 0, 1, i8::MAX] {
-                            let st = CounterState {
-                                cv,
-                                cu_prev: e & 1 != 0,
-                                cd_prev: e & 2 != 0,
-                            };
-                            let i = CounterInput {
-                                cu: bits & 1 != 0,
-                                cd: bits & 2 != 0,
-                                r: bits & 4 != 0,
-                                ld: bits & 8 != 0,
-                                pv,
-                            };
-                            prop_iec_counter_rules(kind, st, i);
-                            let ust = CounterState {
-                                cv: cv as u8,
-                                ..CounterState::default()
-                            };
-                            let ust = CounterState {
-                                cu_prev: st.cu_prev,
-                                cd_prev: st.cd_prev,
-                                ..ust
-                            };
-                            prop_iec_counter_rules(
-                                kind,
-                                ust,
-                                CounterInput {
-                                    cu: i.cu,
-                                    cd: i.cd,
-                                    r: i.r,
-                                    ld: i.ld,
-                                    pv: pv as u8,
-                                },
-                            );
+    crate::cover::check_ids(
+        &[
+            "CNT-EDGE-01",
+            "CNT-PRIO-01",
+            "CNT-SAT-01",
+            "CNT-SIMUL-01",
+            "CNT-Q-01",
+            "CNT-INPUTS-01",
+        ],
+        || {
+            for kind in CounterKind::ALL {
+                for e in 0..4u8 {
+                    for bits in 0..16u8 {
+                        for cv in i8::MIN..=i8::MAX {
+                            for pv in [i8::MIN, -1, 0, 1, i8::MAX] {
+                                let st = CounterState {
+                                    cv,
+                                    cu_prev: e & 1 != 0,
+                                    cd_prev: e & 2 != 0,
+                                };
+                                let i = CounterInput {
+                                    cu: bits & 1 != 0,
+                                    cd: bits & 2 != 0,
+                                    r: bits & 4 != 0,
+                                    ld: bits & 8 != 0,
+                                    pv,
+                                };
+                                prop_iec_counter_rules(kind, st, i);
+                                let ust = CounterState {
+                                    cv: cv as u8,
+                                    ..CounterState::default()
+                                };
+                                let ust = CounterState {
+                                    cu_prev: st.cu_prev,
+                                    cd_prev: st.cd_prev,
+                                    ..ust
+                                };
+                                prop_iec_counter_rules(
+                                    kind,
+                                    ust,
+                                    CounterInput {
+                                        cu: i.cu,
+                                        cd: i.cd,
+                                        r: i.r,
+                                        ld: i.ld,
+                                        pv: pv as u8,
+                                    },
+                                );
+                            }
                         }
                     }
                 }
             }
-        }
-    });
+        },
+    );
 }
 
 macro_rules! counter_harness {
     ($name:ident, $t:ty) => {
         /// CNT-EQUIV-01 and every IEC counter rule for this type: random under `cargo test`,
-        /// every state and input under Kani (no loop but the implementations:
-        /// `#[kani::unwind(4)]` covers the three of CTUD and the bank's one counter).
+        /// every state and input under Kani. Symbolic: the kind, the state (CV of this type,
+        /// the edge memories, Q), CU, CD, R, LD and PV. No loop but the implementations:
+        /// `#[kani::unwind(4)]` covers the three of CTUD (and the exit) and the bank's one
+        /// counter.
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(4))]
         fn $name() {
@@ -745,11 +820,11 @@ fn s5_counter_impls(
     let mut w = S5Counter::from_state(st).expect("valid");
     w.call(kind, i);
     let mut area = CounterMemory::<2>::new();
-    assert_eq!(area.set_state(1, st), Ok(true));
+    check_eq!(area.set_state(1, st), Ok(true));
     let ao = area.call(1, kind, i).expect("C 1");
     // The box as its STL sequence FR, CU, CD, S, R on C 0 (SC-PRIO-01, SC-INPUTS-01).
     let mut stl = CounterMemory::<1>::new();
-    assert_eq!(stl.set_state(0, st), Ok(true));
+    check_eq!(stl.set_state(0, st), Ok(true));
     let mut ops = vec![stl.fr(0, i.fr)];
     if kind.counts_up() {
         ops.push(stl.cu(0, i.cu));
@@ -759,7 +834,7 @@ fn s5_counter_impls(
     }
     ops.push(stl.set(0, i.s, i.pv));
     ops.push(stl.reset(0, i.r));
-    assert!(ops.iter().all(Result::is_ok), "C 0 exists");
+    check!(ops.iter().all(Result::is_ok), "C 0 exists");
     let so = plc_timers::counter::s5::S5CounterOutput {
         q: stl.status(0).expect("C 0"),
         cv: stl.load(0).expect("C 0"),
@@ -786,28 +861,30 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
     let cv = i32::from(st.cv);
     let pv = i.pv.value();
     for (name, post, out) in s5_counter_impls(kind, st, i) {
-        assert!(
+        check!(
             post.cv <= 999,
             "SC-RANGE-01: {name}: CV {} in 0..=999",
             post.cv
         );
         let bcd = (post.cv / 100) << 8 | (post.cv / 10 % 10) << 4 | (post.cv % 10);
-        assert_eq!(
+        check_eq!(
             (out.cv, out.cv_bcd),
             (post.cv, bcd),
             "SC-RANGE-01: {name}: CV_BCD is the BCD of CV"
         );
-        assert_eq!(
+        check_eq!(
             out.q,
             post.cv != 0,
             "SC-Q-01: {name}: Q = 1 exactly when CV != 0"
         );
-        assert_eq!(
-            post.fr_prev, i.fr,
+        check_eq!(
+            post.fr_prev,
+            i.fr,
             "SC-FR-01: {name}: the FR memory takes FR"
         );
-        assert_eq!(
-            post.s_prev, i.s,
+        check_eq!(
+            post.s_prev,
+            i.s,
             "SC-EDGE-01: {name}: the S memory takes S on every call"
         );
         // The CU and CD memories: the input if the box has it, else left (SC-INPUTS-01); a
@@ -827,48 +904,54 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
             cd_m
         };
         if kind.counts_up() {
-            assert_eq!(
-                post.cu_prev, cu_after,
+            check_eq!(
+                post.cu_prev,
+                cu_after,
                 "SC-EDGE-01: {name}: the CU memory takes CU (cleared by a set)"
             );
         } else {
-            assert_eq!(
-                post.cu_prev, cu_after,
+            check_eq!(
+                post.cu_prev,
+                cu_after,
                 "SC-INPUTS-01: {name}: S_CD leaves the CU memory alone"
             );
         }
         if kind.counts_down() {
-            assert_eq!(
-                post.cd_prev, cd_after,
+            check_eq!(
+                post.cd_prev,
+                cd_after,
                 "SC-EDGE-01: {name}: the CD memory takes CD (cleared by a set)"
             );
         } else {
-            assert_eq!(
-                post.cd_prev, cd_after,
+            check_eq!(
+                post.cd_prev,
+                cd_after,
                 "SC-INPUTS-01: {name}: S_CU leaves the CD memory alone"
             );
         }
         let after = i32::from(post.cv);
         if i.r {
-            assert_eq!(
-                after, 0,
+            check_eq!(
+                after,
+                0,
                 "SC-PRIO-01: {name}: R = 1 holds CV at 0 over S and counting"
             );
             continue;
         }
         if set {
-            assert_eq!(
-                post.cv, pv,
+            check_eq!(
+                post.cv,
+                pv,
                 "SC-SET-01: {name}: a rising S sets CV = PV over counting"
             );
-            assert!(
+            check!(
                 !post.cu_prev && !post.cd_prev,
                 "SC-SET-01: {name}: a set clears the CU and CD memories"
             );
             continue;
         }
         match (up, down) {
-            (true, true) => assert_eq!(
+            (true, true) => check_eq!(
                 after,
                 match cv {
                     999 => 998,
@@ -877,18 +960,18 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
                 },
                 "SC-SIMUL-01: {name}: CU and CD rising together both count, each saturating"
             ),
-            (true, false) => assert_eq!(
+            (true, false) => check_eq!(
                 after,
                 (cv + 1).min(999),
                 "SC-SAT-01: {name}: up stops at 999"
             ),
             (false, true) => {
-                assert_eq!(after, (cv - 1).max(0), "SC-SAT-01: {name}: down stops at 0")
+                check_eq!(after, (cv - 1).max(0), "SC-SAT-01: {name}: down stops at 0")
             }
-            (false, false) => assert_eq!(after, cv, "SC-EDGE-01: {name}: no rising edge, no count"),
+            (false, false) => check_eq!(after, cv, "SC-EDGE-01: {name}: no rising edge, no count"),
         }
         if fr_rise && !i.cu && !i.cd && !i.s {
-            assert_eq!(after, cv, "SC-FR-01: {name}: FR alone changes no CV");
+            check_eq!(after, cv, "SC-FR-01: {name}: FR alone changes no CV");
         }
     }
     // SC-FR-01 as a relation: a rising FR equals the call from the memories cleared and FR 1.
@@ -904,7 +987,7 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
             .into_iter()
             .zip(s5_counter_impls(kind, cleared, i))
         {
-            assert_eq!(
+            check_eq!(
                 (a, ao),
                 (b, bo),
                 "SC-FR-01: {name}: a rising FR clears the CU, CD and S memories, nothing else"
@@ -926,8 +1009,9 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
                 (true, true) => (pv + 1).min(999),
                 (true, false) => pv.saturating_sub(1),
             };
-            assert_eq!(
-                next.cv, expected,
+            check_eq!(
+                next.cv,
+                expected,
                 "SC-SET-01: {name}: a held count input counts once after a set"
             );
         }
@@ -955,44 +1039,60 @@ pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5Count
 /// memory x every input x PV in {0, 1, 998, 999}. Small scope: the rules compare CV with 0, 1,
 /// 998 and 999 and copy PV; the full CV range is in `exhaustive_s5_counters` (equivalence) and
 /// Kani's `kani_s5_counter` (every state).
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn exhaustive_s5_counter_rules() {
-    let n = crate::cover::check(|| {
-        let mut n = 0u32;
-        for kind in S5CounterKind::ALL {
-            for cv in [0, 1, 2, 500, 997, 998, 999] {
-                for e in 0..16u8 {
-                    let st = S5CounterState {
-                        cv,
-                        cu_prev: e & 1 != 0,
-                        cd_prev: e & 2 != 0,
-                        s_prev: e & 4 != 0,
-                        fr_prev: e & 8 != 0,
-                    };
-                    for bits in 0..32u8 {
-                        for pv in [0, 1, 998, 999] {
-                            let i = S5CounterInput {
-                                cu: bits & 1 != 0,
-                                cd: bits & 2 != 0,
-                                s: bits & 4 != 0,
-                                r: bits & 8 != 0,
-                                fr: bits & 16 != 0,
-                                pv: CounterPreset::new(pv).expect("<= 999"),
-                            };
-                            n += u32::from(prop_s5_counter_rules(kind, st, i));
+    let n = crate::cover::check_ids(
+        &[
+            "SC-RANGE-01",
+            "SC-PRIO-01",
+            "SC-EDGE-01",
+            "SC-SAT-01",
+            "SC-Q-01",
+            "SC-SIMUL-01",
+            "SC-SET-01",
+            "SC-FR-01",
+            "SC-INPUTS-01",
+        ],
+        || {
+            let mut n = 0u32;
+            for kind in S5CounterKind::ALL {
+                for cv in [0, 1, 2, 500, 997, 998, 999] {
+                    for e in 0..16u8 {
+                        let st = S5CounterState {
+                            cv,
+                            cu_prev: e & 1 != 0,
+                            cd_prev: e & 2 != 0,
+                            s_prev: e & 4 != 0,
+                            fr_prev: e & 8 != 0,
+                        };
+                        for bits in 0..32u8 {
+                            for pv in [0, 1, 998, 999] {
+                                let i = S5CounterInput {
+                                    cu: bits & 1 != 0,
+                                    cd: bits & 2 != 0,
+                                    s: bits & 4 != 0,
+                                    r: bits & 8 != 0,
+                                    fr: bits & 16 != 0,
+                                    pv: CounterPreset::new(pv).expect("<= 999"),
+                                };
+                                n += u32::from(prop_s5_counter_rules(kind, st, i));
+                            }
                         }
                     }
                 }
             }
-        }
-        n
-    });
-    assert_eq!(n, 3 * 7 * 16 * 32 * 4);
+            n
+        },
+    );
+    check_eq!(n, 3 * 7 * 16 * 32 * 4);
 }
 
 /// The bolero harness of the S5 counters: equivalence and every rule, random under `cargo
-/// test`, every state and input under Kani (the loops: over the four implementations and the
-/// box's five STL operations: `#[kani::unwind(6)]`).
+/// test`, every state and input under Kani. Symbolic: the kind, the state (CV 0..=999, the CU,
+/// CD, S and FR memories, Q), CU, CD, S, PV, R, FR. `#[kani::unwind(6)]`: the box's five STL
+/// operations and the exit (the loop over the four implementations is shorter).
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(6))]
 fn kani_s5_counter() {
@@ -1005,9 +1105,9 @@ fn kani_s5_counter() {
         });
 }
 
-/// The bolero harness of the counter memory's STL operations (SC-STL-01, FR included): any
-/// sequence of four operations with their RLOs (`#[kani::unwind(5)]`: four operations and the
-/// loop's exit).
+/// The bolero harness of the counter memory's STL operations (SC-STL-01, FR included). Symbolic:
+/// the preset (0..=999) and four operations, each one of FR, CU, CD, S, R with its RLO.
+/// `#[kani::unwind(5)]`: the four operations and the loop's exit.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_stl_operations() {
@@ -1026,13 +1126,15 @@ fn kani_stl_operations() {
         });
 }
 
-/// The bolero harness of the CTUD bank (CNT-EQUIV-01): 8 counters, 3 scans of any inputs
-/// (`#[kani::unwind(9)]`: the bank's and the check's loops over 8 counters, and 3 scans).
+/// The bolero harness of the CTUD bank (CNT-EQUIV-01): 2 counters, 3 scans. Symbolic: the CU,
+/// CD, R and LD bit masks of each scan (`u64` each; bits 0 and 1 are the two counters'), PV (any
+/// `i16`). `#[kani::unwind(4)]`: the 3 scans and the exit; the bank's and the check's loops over
+/// the 2 counters are shorter.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(9))]
+#[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_counter_bank() {
     bolero::check!()
         .with_type::<([[u64; 4]; 3], i16)>()
         .with_iterations(2_000)
-        .for_each(|(scans, pv)| prop_bank::<i16, 8>(scans, *pv));
+        .for_each(|(scans, pv)| prop_bank::<i16, 2>(scans, *pv));
 }

@@ -8,6 +8,7 @@
 //! ordering of START, now, ET and PT, and every wrap of `now - START`, occurs at 4 bits. The
 //! proptest driver and the Kani harnesses cover the 32-bit clock.
 
+use crate::cover::{check, check_eq};
 use std::thread;
 
 use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef, TonBank};
@@ -90,7 +91,7 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     let Some(mut opt) = IecTimerOf::from_state(state) else {
         return false;
     };
-    assert_eq!(
+    check_eq!(
         opt.state(),
         state,
         "IEC-STRUCT-01: abstraction inverts from_state"
@@ -98,20 +99,20 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     let mut r = IecTimerRef::from_state(state).expect("valid");
     let ro = apply(&mut r, op);
     let oo = apply(&mut opt, op);
-    assert_eq!(oo, ro, "IEC-STRUCT-01 outputs {state:?} {op:?}");
-    assert_eq!(
+    check_eq!(oo, ro, "IEC-STRUCT-01 outputs {state:?} {op:?}");
+    check_eq!(
         opt.state(),
         r.state(),
         "IEC-STRUCT-01 state {state:?} {op:?}"
     );
     // Equal states are equal bytes: the structure is exactly the encoding of the reference
     // state (no stray flag bits, no stale START), and its accessors read the same members.
-    assert_eq!(
+    check_eq!(
         IecTimerOf::from_state(r.state()),
         Some(opt),
         "IEC-STRUCT-01 canonical bytes {state:?} {op:?}"
     );
-    assert_eq!((opt.pt(), opt.et()), (r.state().pt, r.state().et));
+    check_eq!((opt.pt(), opt.et()), (r.state().pt, r.state().et));
     true
 }
 
@@ -127,17 +128,17 @@ fn sequence_step<C: ClockWord>(
 ) {
     let ro = apply(r, op);
     let oo = apply(opt, op);
-    assert_eq!(oo, ro, "IEC-EQUIV-02 outputs at step {step} of {ops:?}");
-    assert_eq!(
+    check_eq!(oo, ro, "IEC-EQUIV-02 outputs at step {step} of {ops:?}");
+    check_eq!(
         opt.state(),
         r.state(),
         "IEC-EQUIV-02 state at step {step} of {ops:?}"
     );
-    assert!(
+    check!(
         opt.state().is_valid() && r.state().is_valid(),
         "IEC-ET-RANGE-01 at step {step} of {ops:?}"
     );
-    assert_eq!(
+    check_eq!(
         IecTimerOf::from_state(r.state()),
         Some(*opt),
         "IEC-EQUIV-02 canonical bytes at step {step} of {ops:?}"
@@ -150,7 +151,7 @@ fn sequence_step<C: ClockWord>(
 pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op]) {
     let mut r = IecTimerRef::<C>::default();
     let mut opt = IecTimerOf::<C>::new();
-    assert_eq!(opt.state(), r.state(), "IEC-EQUIV-02 initial state");
+    check_eq!(opt.state(), r.state(), "IEC-EQUIV-02 initial state");
     for (i, &op) in ops.iter().enumerate() {
         sequence_step(&mut r, &mut opt, op, i, ops);
     }
@@ -169,25 +170,25 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
     let after = r.state();
     // Stated here rather than through `IecState::is_valid`, so that the property does not
     // trust the predicate it is meant to check.
-    assert!(
+    check!(
         after.et <= after.pt,
         "IEC-ET-RANGE-01: {after:?} after {op:?}"
     );
-    assert!(
+    check!(
         after.running || after.start == C::default(),
         "a stopped timer keeps no START: {after:?} after {op:?}"
     );
-    assert_eq!(
+    check_eq!(
         (q, et),
         (after.q, after.et),
         "outputs are the structure's members"
     );
-    assert!(
+    check!(
         after.pt.to_u64() <= i32::MAX as u64,
         "IEC-ET-RANGE-01: PT is a non-negative TIME"
     );
     match op {
-        Op::Rt => assert!(
+        Op::Rt => check!(
             after.et == C::default() && !after.q && !after.running,
             "IEC-RT-01: RT clears ET and Q"
         ),
@@ -197,13 +198,13 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
                 IecKind::Tof => !input.input && state.input,
                 IecKind::Tonr => input.input && !input.reset,
             };
-            assert!(
+            check!(
                 edge,
                 "IEC-EDGE-01: {kind:?} started without its starting edge"
             );
         }
         Op::ReadQ(_) | Op::ReadEt(_) | Op::PtCoil(_) | Op::RunStopRun(true) => {
-            assert!(
+            check!(
                 !after.running || state.running,
                 "an access or coil never starts a timer"
             );
@@ -245,7 +246,7 @@ pub fn prop_table_8_20<C: ClockWord>(
         (o, r.state())
     };
     let (o, after) = step(input);
-    assert_eq!(
+    check_eq!(
         step(IecInput {
             pt: other_pt,
             ..input
@@ -259,21 +260,21 @@ pub fn prop_table_8_20<C: ClockWord>(
                 input: !input.input,
                 ..input
             });
-            assert_eq!(
+            check_eq!(
                 (o2, a2.running, a2.start, a2.pt),
                 (o, after.running, after.start, after.pt),
                 "TP-IN-01"
             );
         }
         IecKind::Ton if !input.input => {
-            assert!(!after.running && !o.q && o.et == C::default(), "TON-IN-01");
+            check!(!after.running && !o.q && o.et == C::default(), "TON-IN-01");
         }
         IecKind::Tof if input.input => {
-            assert!(!after.running && o.q && o.et == C::default(), "TOF-IN-01");
+            check!(!after.running && o.q && o.et == C::default(), "TOF-IN-01");
         }
         IecKind::Tonr if !input.input && !input.reset => {
             let accumulated = now.clock::<C>().elapsed_since(state.start);
-            assert!(
+            check!(
                 !after.running && o.et == accumulated,
                 "TONR-IN-01: stops, ET keeps the accumulated time"
             );
@@ -366,7 +367,7 @@ pub fn all_ops_u4() -> Vec<Op> {
 fn exhaustive_u4_step_equivalence_and_invariants() {
     let states = all_states_u4();
     let ops = all_ops_u4();
-    assert_eq!(states.len(), 46_240);
+    check_eq!(states.len(), 46_240);
     let (a, b) = states.split_at(states.len() / 2);
     let n = thread::scope(|scope| {
         let mut workers = Vec::new();
@@ -396,8 +397,8 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
     // Every enumerated state is valid, so every (state, operation) pair is checked; Table 8-20
     // applies to the calls of a running timer of the called kind, a strict, non-empty subset.
     let all = (states.len() * ops.len()) as u64;
-    assert_eq!((n[0], n[1]), (all, all), "every case checked");
-    assert!(n[2] > 0 && n[2] < all, "{} Table 8-20 cases", n[2]);
+    check_eq!((n[0], n[1]), (all, all), "every case checked");
+    check!(n[2] > 0 && n[2] < all, "{} Table 8-20 cases", n[2]);
 }
 
 /// The alphabet of the bounded sequence driver on the 4-bit clock: calls of every kind at
@@ -449,7 +450,7 @@ fn sequences_from(
 #[test]
 fn bounded_sequences_u4_from_initial_state() {
     let alphabet = sequence_ops_u4();
-    assert_eq!(alphabet.len(), 168);
+    check_eq!(alphabet.len(), 168);
     let steps = sequences_from(
         &IecTimerRef::default(),
         &IecTimerOf::new(),
@@ -457,7 +458,7 @@ fn bounded_sequences_u4_from_initial_state() {
         &mut Vec::new(),
         3,
     );
-    assert_eq!(steps, 168 + 168 * 168 + 168 * 168 * 168);
+    check_eq!(steps, 168 + 168 * 168 + 168 * 168 * 168);
 }
 
 /// The update on the real `u8` instance of the generic code (no test-only clock): every START
@@ -509,7 +510,7 @@ fn exhaustive_u8_update_every_start_now_pt() {
             .map(|w| w.join().expect("worker finished"))
             .sum()
     });
-    assert_eq!(checked, 2 * 4 * 256 * 256 * 256, "every case checked");
+    check_eq!(checked, 2 * 4 * 256 * 256 * 256, "every case checked");
 }
 
 fn arb_kind() -> impl Strategy<Value = IecKind> {
@@ -602,7 +603,7 @@ pub fn prop_ton_bank<const N: usize>(
 ) {
     let mut bank = TonBank::<N>::new();
     let mut refs = [IecTimerRef::new(); N];
-    assert_eq!(
+    check_eq!(
         bank.output(N),
         Err(NoSuchOperand {
             operand: Operand::Timer,
@@ -617,8 +618,8 @@ pub fn prop_ton_bank<const N: usize>(
         bank.scan(now, input, pts);
         for (i, r) in refs.iter_mut().enumerate() {
             let o = r.call(IecKind::Ton, now, IecInput::new(input[i], pts[i]));
-            assert_eq!(bank.output(i), Ok(o), "IEC-BANK-01: timer {i} at {now:?}");
-            assert_eq!(
+            check_eq!(bank.output(i), Ok(o), "IEC-BANK-01: timer {i} at {now:?}");
+            check_eq!(
                 bank.get(i),
                 Ok(r.state()),
                 "IEC-BANK-01: state of timer {i} at {now:?}"
@@ -730,7 +731,7 @@ fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (b
         et: w(state.et),
         q: state.q,
     };
-    assert_eq!(
+    check_eq!(
         bank.set_state(0, s32),
         Ok(true),
         "IEC-BANK-01: the bank takes every valid TON state"
@@ -738,7 +739,7 @@ fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (b
     bank.scan(now, &[input.input], &[input.pt]);
     let after = bank.get(0).expect("timer 0");
     let out = bank.output(0).expect("timer 0");
-    assert_eq!(
+    check_eq!(
         (out.q, out.et),
         (after.q, after.et),
         "IEC-BANK-01: outputs are the members"
@@ -821,16 +822,21 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
     let Some((post, (q, et))) = iec_run(imp, st, op) else {
         return false;
     };
-    assert_eq!(
-        (q, et),
-        (post.q, post.et),
-        "IEC-ACCESS-01: {imp:?}: outputs are Q and ELAPSED"
-    );
-    assert!(
+    if let Op::Call(..) = op {
+        // The box's outputs (its return value) against the members read back from the state: two
+        // code paths. The outputs of the coils and of RUN-STOP-RUN are read from the state by
+        // `apply`, so nothing is compared for them.
+        check_eq!(
+            (q, et),
+            (post.q, post.et),
+            "IEC-ACCESS-01: {imp:?}: the box's Q and ET outputs are the members after the call"
+        );
+    }
+    check!(
         post.et <= post.pt,
         "IEC-ET-RANGE-01: {imp:?}: ET <= PT: {st:?} {op:?} -> {post:?}"
     );
-    assert!(
+    check!(
         post.pt.to_u64() <= i32::MAX as u64,
         "IEC-ET-RANGE-01: {imp:?}: PT is a non-negative TIME"
     );
@@ -841,16 +847,28 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
                 Some(kind) => updated(st, now, kind),
                 None => st,
             };
-            assert_eq!(
+            check_eq!(
                 post, expected,
                 "IEC-ACCESS-01: {imp:?}: a read of Q or ELAPSED updates first, nothing else: {st:?} {op:?}"
+            );
+            // The value read is the updated member, from the closed form (not from the state
+            // the implementation leaves).
+            let read = if let Op::ReadQ(_) = op {
+                (q, expected.et)
+            } else {
+                (expected.q, et)
+            };
+            check_eq!(
+                read,
+                (expected.q, expected.et),
+                "IEC-ACCESS-01: {imp:?}: the read returns the updated member: {st:?} {op:?}"
             );
             cover!(
                 st.running && !post.running,
                 "IEC-ACCESS-01: a read finds the time run out"
             );
         }
-        Op::Rt => assert_eq!(
+        Op::Rt => check_eq!(
             post,
             IecState {
                 input: false,
@@ -864,17 +882,17 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
         ),
         Op::PtCoil(pt) => {
             let p = latched::<C>(pt);
-            assert_eq!(
+            check_eq!(
                 post.pt.to_u64(),
                 p,
                 "IEC-PT-COIL-01: {imp:?}: the PT coil loads the preset"
             );
-            assert_eq!(
+            check_eq!(
                 post.et.to_u64(),
                 st.et.to_u64().min(p),
                 "IEC-PT-COIL-01: {imp:?}: ET is clamped to it"
             );
-            assert_eq!(
+            check_eq!(
                 (post.kind, post.input, post.running, post.start, post.q),
                 (st.kind, st.input, st.running, st.start, st.q),
                 "IEC-PT-COIL-01: {imp:?}: no update; a running timer uses it from its next update"
@@ -886,8 +904,9 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
         }
         Op::RunStopRun(retentive) => {
             let expected = if retentive { st } else { IecState::default() };
-            assert_eq!(
-                post, expected,
+            check_eq!(
+                post,
+                expected,
                 "IEC-RETAIN-01: {imp:?}: RUN-STOP-RUN keeps a retentive structure, clears another"
             );
         }
@@ -903,7 +922,9 @@ fn call_rules<C: ClockWord>(
     i: IecInput,
     post: IecState<C>,
 ) {
-    let now_c = C::from_u64_wrapping(now.as_millis());
+    // The clock's value at `now`, computed here (not with the crate's `ClockWord`): the CPU's
+    // millisecond count modulo 2^BITS.
+    let now_clock = now.as_millis() & ((1u64 << C::BITS) - 1);
     let e = elapsed(now, st.start);
     let p = latched::<C>(i.pt);
     let same_kind = st.kind == Some(kind);
@@ -920,29 +941,29 @@ fn call_rules<C: ClockWord>(
         IecKind::Tonr => false,
     };
     if start_edge && (kind != IecKind::Tp || same_kind || !st.running) {
-        assert_eq!(
+        check_eq!(
             post.pt.to_u64(),
             p,
             "IEC-PT-LATCH-01: {imp:?}: the start latches PT"
         );
         if p > 0 {
-            assert!(
-                post.running && post.start == now_c && post.et == C::ZERO,
+            check!(
+                post.running && post.start.to_u64() == now_clock && post.et == C::ZERO,
                 "IEC-START-01: {imp:?}: the starting edge copies the clock into START: {st:?} {kind:?} {now:?} {i:?} -> {post:?}"
             );
-            assert_eq!(
+            check_eq!(
                 post.q,
                 q_while(kind),
                 "IEC-START-01: {imp:?}: Q while timing"
             );
         } else {
-            assert!(
+            check!(
                 !post.running && post.et == C::ZERO && post.q == (kind == IecKind::Ton),
                 "IEC-PT0-01: {imp:?}: PT = 0: the starting call updates (TON on, no TP pulse, TOF off): {st:?} {kind:?} {i:?} -> {post:?}"
             );
         }
         if i.pt.as_millis() < 0 {
-            assert_eq!(
+            check_eq!(
                 post.pt,
                 C::ZERO,
                 "IEC-ET-RANGE-01: {imp:?}: a negative PT is taken as 0"
@@ -957,7 +978,7 @@ fn call_rules<C: ClockWord>(
             IecKind::Tof => falling,
             IecKind::Tonr => i.input && !i.reset,
         };
-        assert!(
+        check!(
             edge,
             "IEC-EDGE-01: {imp:?}: {kind:?} started without its starting edge: {st:?} {i:?}"
         );
@@ -980,20 +1001,21 @@ fn call_rules<C: ClockWord>(
             } else {
                 st.pt
             };
-            assert!(
+            check!(
                 !post.running && post.et == et && post.q != q_while(kind),
                 "IEC-EXPIRY-01: {imp:?}: at ET >= PT the time has run out (ET = PT; TON/TONR Q = 1, TP/TOF Q = 0): {st:?} {kind:?} {now:?} -> {post:?}"
             );
         } else {
-            assert!(
+            check!(
                 post.running && post.et.to_u64() == e && post.q == q_while(kind),
                 "IEC-WRAP-01: {imp:?}: ET = now - START modulo 2^{}: {st:?} {now:?} -> {post:?}",
                 C::BITS
             );
         }
         // PT at the box is ignored while running (IEC-PT-LATCH-01).
-        assert_eq!(
-            post.pt, st.pt,
+        check_eq!(
+            post.pt,
+            st.pt,
             "IEC-PT-LATCH-01: {imp:?}: PT latched while running"
         );
     }
@@ -1012,7 +1034,7 @@ fn call_rules<C: ClockWord>(
     match kind {
         IecKind::Tp => {
             if running && !expired_now {
-                assert!(
+                check!(
                     post.running && post.start == st.start && post.pt == st.pt && post.q,
                     "TP-IN-01: {imp:?}: IN changes have no effect while the pulse runs"
                 );
@@ -1025,20 +1047,20 @@ fn call_rules<C: ClockWord>(
                 } else {
                     st.et
                 };
-                assert_eq!(
+                check_eq!(
                     post.et, et,
                     "TP-IN-01: {imp:?}: after the pulse ET stays at PT while IN = 1, 0 when IN = 0: {st:?} {i:?} -> {post:?}"
                 );
             }
             if expired_now && rising {
-                assert_eq!(
+                check_eq!(
                     post.pt.to_u64(),
                     p,
                     "TP-RETRIGGER-01: {imp:?}: a new pulse latches PT"
                 );
                 if p > 0 {
-                    assert!(
-                        post.running && post.start == now_c && post.q,
+                    check!(
+                        post.running && post.start.to_u64() == now_clock && post.q,
                         "TP-RETRIGGER-01: {imp:?}: a rising IN in the call where the pulse runs out starts a new one: {st:?} {now:?} -> {post:?}"
                     );
                 }
@@ -1050,7 +1072,7 @@ fn call_rules<C: ClockWord>(
         }
         IecKind::Ton => {
             if !i.input {
-                assert!(
+                check!(
                     !post.running && !post.q && post.et == C::ZERO,
                     "TON-IN-01: {imp:?}: IN = 0 resets and stops: {st:?} -> {post:?}"
                 );
@@ -1058,12 +1080,12 @@ fn call_rules<C: ClockWord>(
         }
         IecKind::Tof => {
             if i.input {
-                assert!(
+                check!(
                     !post.running && post.q && post.et == C::ZERO,
                     "TOF-IN-01: {imp:?}: IN = 1: Q = 1, reset and stopped: {st:?} -> {post:?}"
                 );
             } else if !st.running && !st.input && same_kind {
-                assert_eq!(
+                check_eq!(
                     (post.et, post.q),
                     (st.et, st.q),
                     "TOF-IN-01: {imp:?}: after the delay ET holds until IN returns to 1"
@@ -1072,39 +1094,39 @@ fn call_rules<C: ClockWord>(
         }
         IecKind::Tonr => {
             if i.reset {
-                assert!(
+                check!(
                     !post.running && !post.q && post.et == C::ZERO && post.start == C::ZERO,
                     "TONR-R-01: {imp:?}: R resets ET and Q and stops, before anything else: {st:?} {i:?} -> {post:?}"
                 );
                 return;
             }
             if st.q && same_kind {
-                assert!(
+                check!(
                     post.q,
                     "TONR-IN-01: {imp:?}: Q stays 1 after expiry until R"
                 );
             }
             if !i.input && running && !expired_now {
-                assert!(
+                check!(
                     !post.running && post.et.to_u64() == e && !post.q,
                     "TONR-IN-01: {imp:?}: IN = 0 stops without reset; ET keeps the accumulated time: {st:?} {now:?} -> {post:?}"
                 );
             }
             if i.input && !st.running && !st.q {
-                assert_eq!(
+                check_eq!(
                     post.pt.to_u64(),
                     p,
                     "TONR-RESUME-01: {imp:?}: resumes with the PT of that moment"
                 );
                 if st.et.to_u64() < p {
-                    assert!(
+                    check!(
                         post.running
                             && post.et == st.et
                             && elapsed(now, post.start) == st.et.to_u64(),
                         "TONR-RESUME-01: {imp:?}: resumes from the accumulated ET (START shifted back): {st:?} {now:?} {i:?} -> {post:?}"
                     );
                 } else {
-                    assert!(
+                    check!(
                         !post.running && post.q && post.et == post.pt,
                         "TONR-RESUME-01: {imp:?}: an accumulated ET at or above the new PT has run out"
                     );
@@ -1125,8 +1147,9 @@ fn call_rules<C: ClockWord>(
         };
         if !start_edge {
             let (alt, _) = iec_run(imp, st, Op::Call(kind, now, other)).expect("same impl");
-            assert_eq!(
-                alt, post,
+            check_eq!(
+                alt,
+                post,
                 "IEC-PT-LATCH-01: {imp:?}: PT ignored while running"
             );
         }
@@ -1158,7 +1181,7 @@ pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
             } else {
                 "IEC-STRUCT-01"
             };
-            assert_eq!(x, r, "{id}: {imp:?} equals the reference: {st:?} {op:?}");
+            check_eq!(x, r, "{id}: {imp:?} equals the reference: {st:?} {op:?}");
         }
     }
     checked
@@ -1168,41 +1191,41 @@ pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
 /// 8 and the flags at 12; its bytes round-trip through `to_bytes`/`from_bytes`, which accepts
 /// exactly the valid states.
 pub fn prop_struct(state: IecState<u32>) {
-    assert_eq!(
+    check_eq!(
         core::mem::size_of::<plc_timers::iec::IecTimer>(),
         16,
         "IEC-STRUCT-01: 16 bytes"
     );
     let Some(t) = plc_timers::iec::IecTimer::from_state(state) else {
-        assert!(
+        check!(
             !state.is_valid(),
             "IEC-STRUCT-01: every valid state has a structure"
         );
         return;
     };
     let bytes = t.to_bytes();
-    assert_eq!(
+    check_eq!(
         bytes[0..4],
         state.start.to_ne_bytes(),
         "IEC-STRUCT-01: START at offset 0"
     );
-    assert_eq!(
+    check_eq!(
         bytes[4..8],
         state.pt.to_ne_bytes(),
         "IEC-STRUCT-01: PT at offset 4"
     );
-    assert_eq!(
+    check_eq!(
         bytes[8..12],
         state.et.to_ne_bytes(),
         "IEC-STRUCT-01: ET at offset 8"
     );
-    assert_eq!(bytes[13..], [0; 3], "IEC-STRUCT-01: padding zero");
-    assert_eq!(
+    check_eq!(bytes[13..], [0; 3], "IEC-STRUCT-01: padding zero");
+    check_eq!(
         plc_timers::iec::IecTimer::from_bytes(bytes),
         Some(t),
         "IEC-STRUCT-01: the bytes restore the structure"
     );
-    assert_eq!(
+    check_eq!(
         t.state(),
         state,
         "IEC-STRUCT-01: the abstraction inverts from_state"
@@ -1212,8 +1235,10 @@ pub fn prop_struct(state: IecState<u32>) {
 /// The rule driver on the 4-bit clock: every valid state with PT in {0, 1, 2, 5, 14, 15} (every
 /// START, ET <= PT, kind, IN, running, Q) x every operation of [`all_ops_u4`]. Small scope:
 /// the rules compare `now - START` modulo 16 with PT and 0, which every (START, now) pair of
-/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_rules`) runs the same body on
+/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_*_rules`, one per kind) runs the same body on
 /// the 32-bit clock.
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn exhaustive_u4_iec_rules() {
     let states: Vec<IecState<U4>> = all_states_u4()
@@ -1246,13 +1271,39 @@ fn exhaustive_u4_iec_rules() {
             .collect::<Vec<_>>()
     });
     let n: u64 = hits.iter().map(|(n, _)| n).sum();
-    crate::cover::require(crate::cover::merge(hits.into_iter().map(|(_, h)| h)));
-    assert_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
+    let hits = crate::cover::merge(hits.into_iter().map(|(_, h)| h));
+    crate::cover::require_checked(
+        &[
+            "IEC-START-01",
+            "IEC-EDGE-01",
+            "IEC-PT-LATCH-01",
+            "IEC-EXPIRY-01",
+            "IEC-ET-RANGE-01",
+            "IEC-PT0-01",
+            "IEC-WRAP-01",
+            "IEC-ACCESS-01",
+            "TP-IN-01",
+            "TP-RETRIGGER-01",
+            "TON-IN-01",
+            "TOF-IN-01",
+            "TONR-IN-01",
+            "TONR-RESUME-01",
+            "TONR-R-01",
+            "IEC-RT-01",
+            "IEC-PT-COIL-01",
+            "IEC-RETAIN-01",
+        ],
+        &hits,
+    );
+    crate::cover::require(hits);
+    check_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
 }
 
-/// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_rules`; here
+/// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_ton_rules`; here
 /// every START x now x PT of a running TON, TP, TOF and TONR on `u8` (IEC-WRAP-01 at every
 /// wrap), with IN held.
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn exhaustive_u8_wrap_rules() {
     crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], || {
@@ -1275,7 +1326,7 @@ fn exhaustive_u8_wrap_rules() {
                             CpuTime::from_millis(now),
                             IecInput::new(input, Time::from_millis(9)),
                         );
-                        assert!(prop_iec_rules(st, op));
+                        check!(prop_iec_rules(st, op));
                     }
                 }
             }
@@ -1283,27 +1334,46 @@ fn exhaustive_u8_wrap_rules() {
     });
 }
 
-/// The bolero harness of every IEC rule on the 32-bit clock (reference, structure, bank,
-/// `ton_for_arrays`): random states and operations under `cargo test`, every valid state and
-/// operation under Kani. `#[kani::unwind(17)]`: the bank's scan takes its one timer through the
-/// group code on a padded copy of 16 timers (loops of 16 iterations, and the loop over the
-/// rising edges, at most 16) and its exit; the loop over the 4 implementations is shorter.
-#[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
-fn kani_iec_rules() {
-    bolero::check!()
-        .with_type::<(IecState<u32>, Op)>()
-        .with_iterations(20_000)
-        .for_each(|(st, op)| {
-            let st = IecState {
-                pt: st.pt.min(i32::MAX as u32),
-                et: st.et.min(st.pt.min(i32::MAX as u32)),
-                ..*st
-            };
-            prop_iec_rules(st, *op);
-            prop_struct(st);
-        });
+macro_rules! iec_rules_harness {
+    ($name:ident, $kind:expr) => {
+        /// Every IEC rule for one kind on the 32-bit clock (`prop_iec_rules`: the reference, the
+        /// structure, its array form and, for TON, a one-timer bank; the metamorphic reruns)
+        /// and the structure's layout. Symbolic: the state (any valid one, of this kind or none,
+        /// PT and ET within the TIME range), the operation (a call of this kind at any time with
+        /// any IN and PT, a read of Q or ET at any time, RT, a PT coil with any TIME,
+        /// RUN-STOP-RUN). `#[kani::unwind(17)]`: the TON bank's scan runs its group code on a
+        /// padded copy of 16 timers (loops of 16 iterations and the exit, the largest); the loop
+        /// over the 4 implementations is shorter. The kind is a constant, so each harness holds
+        /// one kind's branches only.
+        #[test]
+        #[cfg_attr(kani, kani::proof, kani::unwind(17))]
+        fn $name() {
+            bolero::check!()
+                .with_type::<(IecState<u32>, Op)>()
+                .with_iterations(5_000)
+                .for_each(|(st, op)| {
+                    let kind: IecKind = $kind;
+                    let st = IecState {
+                        kind: st.kind.map(|_| kind),
+                        pt: st.pt.min(i32::MAX as u32),
+                        et: st.et.min(st.pt.min(i32::MAX as u32)),
+                        ..*st
+                    };
+                    let op = match *op {
+                        Op::Call(_, now, input) => Op::Call(kind, now, input),
+                        other => other,
+                    };
+                    prop_iec_rules(st, op);
+                    prop_struct(st);
+                });
+        }
+    };
 }
+
+iec_rules_harness!(kani_iec_tp_rules, IecKind::Tp);
+iec_rules_harness!(kani_iec_ton_rules, IecKind::Ton);
+iec_rules_harness!(kani_iec_tof_rules, IecKind::Tof);
+iec_rules_harness!(kani_iec_tonr_rules, IecKind::Tonr);
 
 /// IEC-WRAP-01 over gaps on the 32-bit clock: a TON started at `t0` and updated `gap` ms later
 /// shows ET = min(gap, PT) for every gap below 2^32 ms (2^31 and more included), and a gap of
@@ -1319,7 +1389,7 @@ pub fn prop_wrap_gap(t0: u64, gap: u64, pt: u32) {
         let et = t.call(IecKind::Ton, now, IecInput::new(true, pt)).et;
         let seen = gap % (1 << 32);
         let pt = u64::try_from(pt.as_millis()).expect("non-negative");
-        assert_eq!(
+        check_eq!(
             u64::from(et),
             seen.min(pt),
             "IEC-WRAP-01: a gap of {gap} ms shows ET = min(gap mod 2^32, PT)"
@@ -1331,8 +1401,9 @@ pub fn prop_wrap_gap(t0: u64, gap: u64, pt: u32) {
     );
 }
 
-/// The bolero harness of IEC-WRAP-01 over gaps (no loop but the two implementations:
-/// `#[kani::unwind(3)]`).
+/// The bolero harness of IEC-WRAP-01 over gaps. Symbolic: the start time, the gap (once any
+/// `u64` quartered, once below 2^36) and PT (31 bits). No loop but the two implementations:
+/// `#[kani::unwind(3)]` (2 and the exit).
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(3))]
 fn kani_wrap_gap() {
@@ -1347,9 +1418,11 @@ fn kani_wrap_gap() {
 
 /// IEC-WRAP-01 at the boundaries: gaps 2^31 - 1, 2^31, 2^32 - 1 are exact, 2^32 and 2^32 + 5
 /// alias.
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn wrap_gap_boundaries() {
-    crate::cover::check(|| {
+    crate::cover::check_covers(|| {
         for gap in [
             0,
             1,
@@ -1367,8 +1440,9 @@ fn wrap_gap_boundaries() {
     });
 }
 
-/// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock (`#[kani::unwind(4)]`:
-/// the loop over the 3 operations and its exit).
+/// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock. Symbolic: the three
+/// operations (each any call, read, coil or RUN-STOP-RUN, with any time, IN and PT).
+/// `#[kani::unwind(4)]`: the loop over the 3 operations and its exit.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_sequence_equivalence() {
@@ -1378,39 +1452,45 @@ fn kani_sequence_equivalence() {
         .for_each(|ops| prop_sequence_equivalence::<u32>(ops));
 }
 
-/// IEC-STRUCT-01 one step on the 32-bit clock, every valid state and operation (no loop).
+/// IEC-STRUCT-01 one step on the 32-bit clock. Symbolic: the state (PT and ET within the TIME
+/// range) and the operation. No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
-    bolero::check!()
-        .with_type::<(IecState<u32>, Op)>()
-        .with_iterations(20_000)
-        .for_each(|&(st, op)| {
-            let st = IecState {
-                pt: st.pt.min(i32::MAX as u32),
-                et: st.et.min(st.pt.min(i32::MAX as u32)),
-                ..st
-            };
-            prop_step_equivalence(st, op);
-            prop_invariants(st, op);
-            if let Op::Call(kind, now, input) = op {
-                prop_table_8_20(st, kind, now, input, Time::from_millis(7));
-            }
-        });
+    crate::cover::check_ids(&["IEC-STRUCT-01"], || {
+        bolero::check!()
+            .with_type::<(IecState<u32>, Op)>()
+            .with_iterations(20_000)
+            .for_each(|&(st, op)| {
+                let st = IecState {
+                    pt: st.pt.min(i32::MAX as u32),
+                    et: st.et.min(st.pt.min(i32::MAX as u32)),
+                    ..st
+                };
+                prop_step_equivalence(st, op);
+                prop_invariants(st, op);
+                if let Op::Call(kind, now, input) = op {
+                    prop_table_8_20(st, kind, now, input, Time::from_millis(7));
+                }
+            });
+    });
 }
 
-/// IEC-BANK-01: a bank of 4 TONs over 3 scans of any inputs, presets and times against 4
-/// reference TONs (`#[kani::unwind(17)]`: the scan takes the 4 timers through the group code on
-/// a padded copy of 16 (loops of 16 iterations, the rising edges at most 16), the check's loop
-/// over 4 timers and the 3 scans are shorter; each with its exit).
+/// IEC-BANK-01: a bank of 2 TONs over 3 scans against 2 reference TONs. Symbolic: the start
+/// time (`u32` ms), the 3 time steps (`u32` ms each), the IN bits of each timer in each scan,
+/// the 2 presets (any TIME). `#[kani::unwind(17)]`: the scan takes the 2 timers through the group
+/// code on a padded copy of 16 (loops of 16 iterations and the exit, the rising edges at most
+/// 16); the check's loop over 2 timers and the 3 scans are shorter.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_bank() {
-    bolero::check!()
-        .with_type::<(u32, [u32; 3], [[bool; 4]; 3], [Time; 4])>()
-        .with_iterations(20_000)
-        .for_each(|(start, steps, inputs, pts)| {
-            let steps = steps.map(u64::from);
-            prop_ton_bank::<4>(u64::from(*start), &steps, inputs, pts);
-        });
+    crate::cover::check_ids(&["IEC-BANK-01"], || {
+        bolero::check!()
+            .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
+            .with_iterations(20_000)
+            .for_each(|(start, steps, inputs, pts)| {
+                let steps = steps.map(u64::from);
+                prop_ton_bank::<2>(u64::from(*start), &steps, inputs, pts);
+            });
+    });
 }

@@ -6,6 +6,7 @@
 //! checked cases against the size of their domain, so that no driver can pass vacuously by
 //! skipping every case.
 
+use crate::cover::{check, check_eq};
 use std::thread;
 
 use plc_timers::s5::reference::is_on_delay;
@@ -52,19 +53,19 @@ pub fn prop_step_equivalence(kind: S5Kind, state: S5State, ticks: u64, input: S5
     let Some(w) = TimerWord::from_state(state) else {
         return false;
     };
-    assert_eq!(
+    check_eq!(
         w.state(),
         state,
         "S5-EQUIV-01: abstraction inverts from_state"
     );
     let (r_state, r_out) = reference_step(kind, state, ticks, input);
     let w = w.tick(ticks).execute(kind, input);
-    assert_eq!(
+    check_eq!(
         w.state(),
         r_state,
         "S5-EQUIV-01 {kind:?} {state:?} {ticks} {input:?}"
     );
-    assert_eq!(
+    check_eq!(
         w.output(),
         r_out,
         "S5-EQUIV-01 outputs {kind:?} {state:?} {ticks} {input:?}"
@@ -80,31 +81,31 @@ pub fn prop_invariants(kind: S5Kind, state: S5State, ticks: u64, input: S5Input)
         return false;
     }
     let (after, out) = reference_step(kind, state, ticks, input);
-    assert!(after.value <= 999, "S5TMR-RANGE-01: value {}", after.value);
-    assert!(
+    check!(after.value <= 999, "S5TMR-RANGE-01: value {}", after.value);
+    check!(
         S5Time::from_word(out.bcd).is_ok_and(|t| t.units() == out.bi),
         "S5TMR-RANGE-01: BCD {:#06X} is the BCD form of BI {}",
         out.bcd,
         out.bi
     );
-    assert_eq!(
+    check_eq!(
         out.bcd & 0xC000,
         0,
         "S5TMR-RANGE-01: bits 15-14 are never produced"
     );
     if input.r {
-        assert_eq!(
+        check_eq!(
             (after.running, after.value, after.base, after.q),
             (false, 0, TimeBase::Ms10, false),
             "S5TMR-R-01: R = 1 resets"
         );
     }
     if !start_signal(kind, &state, &input) {
-        assert!(
+        check!(
             !after.running || state.running,
             "S5TMR-EDGE-01: started without a signal change"
         );
-        assert!(
+        check!(
             after.value <= state.value,
             "S5TMR-EDGE-01: value reloaded without a signal change"
         );
@@ -129,16 +130,16 @@ pub fn prop_expiry_on_vth_tick(kind: S5Kind, value: u16, base: TimeBase) -> bool
     };
     let mut r = S5TimerRef::from_state(state, CpuTime::ZERO).expect("valid");
     r.tick(u64::from(value) - 1);
-    assert!(
+    check!(
         r.state().running && r.state().value == 1,
         "S5TMR-TICK-01: still running before the v-th tick"
     );
     r.tick(1);
-    assert!(
+    check!(
         !r.state().running && r.state().value == 0,
         "S5TMR-TICK-01: run out on the v-th tick"
     );
-    assert_eq!(
+    check_eq!(
         r.state().q,
         is_on_delay(kind),
         "S5TMR-EXPIRE-01: expiry sets the kind's status"
@@ -152,16 +153,16 @@ pub fn prop_cell_word(bits: u32) -> bool {
     match TimerWord::from_bits(bits) {
         Some(w) => {
             let state = w.state();
-            assert!(
+            check!(
                 state.is_valid(),
                 "S5-EQUIV-01: a valid word has a valid state"
             );
-            assert_eq!(
+            check_eq!(
                 TimerWord::from_state(state),
                 Some(w),
                 "S5-EQUIV-01: from_state inverts the abstraction: {bits:#010X}"
             );
-            assert_eq!(w.bits(), bits);
+            check_eq!(w.bits(), bits);
             true
         }
         None => false,
@@ -190,7 +191,7 @@ pub fn prop_kind_rules(kind: S5Kind, state: S5State, ticks: u64, input: S5Input)
         return false;
     }
     let (after, _) = reference_step(kind, state, ticks, input);
-    assert!(
+    check!(
         kind_invariant(kind, &after),
         "{kind:?}: invariant broken by {input:?} from {state:?}"
     );
@@ -199,18 +200,18 @@ pub fn prop_kind_rules(kind: S5Kind, state: S5State, ticks: u64, input: S5Input)
     }
     match kind {
         S5Kind::SPulse | S5Kind::SOdt if !input.s => {
-            assert!(!after.running, "SP-Q-01 / SD-Q-01: S = 0 stops the timer");
+            check!(!after.running, "SP-Q-01 / SD-Q-01: S = 0 stops the timer");
         }
         S5Kind::SPext | S5Kind::SOdts
             if state.running && !input.s && ticks < u64::from(state.value) =>
         {
-            assert!(
+            check!(
                 after.running,
                 "SE-RUN-ON-01 / SS-Q-01: runs on when S falls"
             );
         }
         S5Kind::SOffdt if input.s != s_memory_after_fr(&state, &input) => {
-            assert!(after.q, "SF-Q-01: an edge at S sets Q");
+            check!(after.q, "SF-Q-01: an edge at S sets Q");
         }
         _ => {}
     }
@@ -301,12 +302,12 @@ fn exhaustive_step_equivalence_and_invariants() {
     });
     let per_kind = 96_000 * (TICKS.len() as u64) * 8 * (tvs().len() as u64);
     for (kind, n) in S5Kind::ALL.iter().zip(&counts) {
-        assert_eq!(
+        check_eq!(
             (n[0], n[1]),
             (per_kind, per_kind),
             "{kind:?}: cases checked"
         );
-        assert!(
+        check!(
             n[2] > 0 && n[2] < per_kind,
             "{kind:?}: {} kind-rule cases",
             n[2]
@@ -319,9 +320,9 @@ fn exhaustive_step_equivalence_and_invariants() {
 #[test]
 fn exhaustive_cell_words() {
     let valid = (0..1u32 << 21).filter(|&w| prop_cell_word(w)).count();
-    assert_eq!(valid, 1000 * 4 * 24);
+    check_eq!(valid, 1000 * 4 * 24);
     for high in [1u32 << 21, 1 << 31, u32::MAX, 0x0400, 0x4000] {
-        assert!(!prop_cell_word(high), "{high:#X}: bits outside the fields");
+        check!(!prop_cell_word(high), "{high:#X}: bits outside the fields");
     }
 }
 
@@ -361,8 +362,8 @@ fn exhaustive_every_tv() {
             }
         }
     }
-    assert_eq!(n, 4_000, "every valid S5TIME word visited");
-    assert_eq!(checked, 2 * 4_000 * 5 * 64 * 3, "every case checked");
+    check_eq!(n, 4_000, "every valid S5TIME word visited");
+    check_eq!(checked, 2 * 4_000 * 5 * 64 * 3, "every case checked");
 }
 
 /// Exhaustive: the expiry tick for every kind, every value 1..=999 and every base.
@@ -376,7 +377,7 @@ fn exhaustive_expiry_on_vth_tick() {
             }
         }
     }
-    assert_eq!(checked, 5 * 999 * 4, "every case checked");
+    check_eq!(checked, 5 * 999 * 4, "every case checked");
 }
 
 /// S5-EQUIV-02: from the initial state, the input sequence `steps` (time step in ms, input)
@@ -384,55 +385,61 @@ fn exhaustive_expiry_on_vth_tick() {
 /// one-timer [`TimerMemory`] box call, and the STL sequence the box compiles to (`FR`,
 /// `SP`..`SF`, `R`, then `L`, `LC`, `A`) on a second area.
 pub fn prop_sequence_equivalence(kind: S5Kind, steps: &[(u64, S5Input)]) {
-    let mut r = S5TimerRef::new();
-    let mut lone = S5Timer::new();
-    let mut area = TimerMemory::<1>::new();
-    let mut stl = TimerMemory::<1>::new();
+    prop_sequence_equivalence_from(kind, S5State::RESET, steps);
+}
+
+/// [`prop_sequence_equivalence`] from a valid state `initial` at time 0 instead of power-up.
+pub fn prop_sequence_equivalence_from(kind: S5Kind, initial: S5State, steps: &[(u64, S5Input)]) {
+    let w = TimerWord::from_state(initial).expect("a valid state");
+    let mut r = S5TimerRef::from_state(initial, CpuTime::ZERO).expect("valid");
+    let mut lone = S5Timer::from_state(initial, CpuTime::ZERO).expect("valid");
+    let mut area = TimerMemory::<1>::from_words([w], CpuTime::ZERO);
+    let mut stl = TimerMemory::<1>::from_words([w], CpuTime::ZERO);
     let mut t = CpuTime::ZERO;
     for &(dt, input) in steps {
         t = t.add_millis(dt);
         let a = r.call(kind, t, input);
         let b = area.call(0, kind, t, input).expect("timer 0 exists");
-        assert_eq!(a, b, "S5-EQUIV-02 {kind:?} at t = {t:?}");
-        assert_eq!(area.get(0), Ok(r.state()), "S5-EQUIV-02 state");
-        assert_eq!(area.now(), t, "the area's clock follows the calls");
-        assert_eq!(lone.call(kind, t, input), a, "S5-EQUIV-02 S5Timer at {t:?}");
-        assert_eq!(lone.state(), r.state(), "S5-EQUIV-02 S5Timer state");
+        check_eq!(a, b, "S5-EQUIV-02 {kind:?} at t = {t:?}");
+        check_eq!(area.get(0), Ok(r.state()), "S5-EQUIV-02 state");
+        check_eq!(area.now(), t, "the area's clock follows the calls");
+        check_eq!(lone.call(kind, t, input), a, "S5-EQUIV-02 S5Timer at {t:?}");
+        check_eq!(lone.state(), r.state(), "S5-EQUIV-02 S5Timer state");
         stl.advance_to(t);
         let ops = [
             stl.fr(0, input.fr),
             stl.start(0, kind, input.s, input.tv),
             stl.reset(0, input.r),
         ];
-        assert_eq!(ops, [Ok(()); 3], "timer 0 exists");
+        check_eq!(ops, [Ok(()); 3], "timer 0 exists");
         let read = (stl.status(0), stl.load(0), stl.load_bcd(0));
-        assert_eq!(
+        check_eq!(
             read,
             (Ok(a.q), Ok(a.bi), Ok(a.bcd)),
             "S5-EQUIV-02 STL at t = {t:?}"
         );
-        assert_eq!(stl.words(), area.words(), "S5-EQUIV-02 STL state");
+        check_eq!(stl.words(), area.words(), "S5-EQUIV-02 STL state");
     }
 }
 
-/// S5-AREA-01: `n` ticks of `tick_base` on an area of four timers in the states `states` equal
+/// S5-AREA-01: `n` ticks of `tick_base` on an area of `N` timers in the states `states` equal
 /// the reference tick of each timer whose base is `tick_base`, and leave the others unchanged.
-pub fn prop_area_tick(states: [S5State; 4], tick_base: TimeBase, n: u64) -> bool {
-    let mut words = [TimerWord::RESET; 4];
+pub fn prop_area_tick<const N: usize>(states: [S5State; N], tick_base: TimeBase, n: u64) -> bool {
+    let mut words = [TimerWord::RESET; N];
     for (w, &s) in words.iter_mut().zip(states.iter()) {
         match TimerWord::from_state(s) {
             Some(valid) => *w = valid,
             None => return false,
         }
     }
-    let mut area = TimerMemory::<4>::from_words(words, CpuTime::ZERO);
+    let mut area = TimerMemory::<N>::from_words(words, CpuTime::ZERO);
     area.tick(tick_base, n);
     for (i, &state) in states.iter().enumerate() {
         let mut r = S5TimerRef::from_state(state, CpuTime::ZERO).expect("valid");
         if state.base == tick_base {
             r.tick(n);
         }
-        assert_eq!(area.get(i), Ok(r.state()), "S5-AREA-01 timer {i}");
+        check_eq!(area.get(i), Ok(r.state()), "S5-AREA-01 timer {i}");
     }
     true
 }
@@ -477,26 +484,28 @@ fn bounded_sequences_reference_vs_memory_area() {
 /// timers holding that value in each of the four bases, ticked by each base.
 #[test]
 fn exhaustive_area_tick_per_base() {
-    let mut checked = 0;
-    for value in 0..=999u16 {
-        for flags in 0..4u8 {
-            let states = TimeBase::ALL.map(|base| S5State {
-                running: flags & 1 != 0,
-                value,
-                base,
-                q: flags & 2 != 0,
-                q_on_expiry: false,
-                s_prev: false,
-                fr_prev: false,
-            });
-            for tick_base in TimeBase::ALL {
-                for n in [0u64, 1, 2, 999, u64::MAX] {
-                    checked += u32::from(prop_area_tick(states, tick_base, n));
+    crate::cover::check_ids(&["S5-AREA-01"], || {
+        let mut checked = 0;
+        for value in 0..=999u16 {
+            for flags in 0..4u8 {
+                let states = TimeBase::ALL.map(|base| S5State {
+                    running: flags & 1 != 0,
+                    value,
+                    base,
+                    q: flags & 2 != 0,
+                    q_on_expiry: false,
+                    s_prev: false,
+                    fr_prev: false,
+                });
+                for tick_base in TimeBase::ALL {
+                    for n in [0u64, 1, 2, 999, u64::MAX] {
+                        checked += u32::from(prop_area_tick(states, tick_base, n));
+                    }
                 }
             }
         }
-    }
-    assert_eq!(checked, 1000 * 4 * 4 * 5, "every case checked");
+        check_eq!(checked, 1000 * 4 * 4 * 5, "every case checked");
+    });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -668,8 +677,8 @@ pub fn run(imp: S5Impl, c: S5Case) -> (S5State, S5Output) {
                 area.start(1, kind, input.s, input.tv),
                 area.reset(1, input.r),
             ];
-            assert_eq!(ops, [Ok(()); 3], "timer 1 exists");
-            assert_eq!(
+            check_eq!(ops, [Ok(()); 3], "timer 1 exists");
+            check_eq!(
                 area.words()[0],
                 other,
                 "S5-AREA-01: T 0 of another base untouched"
@@ -719,16 +728,16 @@ pub fn prop_tick(state: S5State, n: u64) -> bool {
         ("word", w.state()),
         ("area", area.get(0).expect("T 0")),
     ] {
-        assert_eq!(
+        check_eq!(
             after.value, expected.value,
             "S5TMR-TICK-01: {name}: {n} ticks take min(n, value) units off a running timer: {state:?}"
         );
-        assert_eq!(
+        check_eq!(
             (after.base, after.s_prev, after.fr_prev),
             (state.base, state.s_prev, state.fr_prev),
             "S5TMR-TICK-01: {name}: a tick changes only value and status"
         );
-        assert_eq!(
+        check_eq!(
             (after.running, after.q),
             (expected.running, expected.q),
             "S5TMR-EXPIRE-01: {name}: at 0 the timer stops and Q takes its expiry status: {state:?} {n}"
@@ -741,6 +750,90 @@ pub fn prop_tick(state: S5State, n: u64) -> bool {
         "S5TMR-TICK-01: a tick leaves time"
     );
     true
+}
+
+/// The OS ticks of a base of `b` ms in the CPU-time interval `(from, to]`, counted one
+/// millisecond at a time as S5TMR-TICK-01 states them (a tick on every whole multiple of the
+/// base), not with the crate's `ticks_between`. Linear in `to - from`: for the concrete drivers.
+pub fn ticks_in(from: u64, to: u64, b: u64) -> u64 {
+    (from.saturating_add(1)..=to).filter(|t| t % b == 0).count() as u64
+}
+
+/// S5TMR-TICK-01 (the tick instants): a running S_PEXT of value 999 executed at `from` and
+/// again at `to` (S held, no edge) has lost exactly the ticks of its base in `(from, to]`
+/// ([`ticks_in`]), through the reference's `call`, an `S5Timer`, an area's box call and an
+/// area's `advance_to`. Returns the tick count.
+pub fn prop_tick_instants(base: TimeBase, from: u64, to: u64) -> u64 {
+    let n = ticks_in(from, to, u64::from(base.millis()));
+    let state = S5State {
+        running: true,
+        value: 999,
+        base,
+        q: true,
+        q_on_expiry: false,
+        s_prev: true,
+        fr_prev: false,
+    };
+    let expected = 999 - n.min(999) as u16;
+    let input = S5Input {
+        s: true,
+        r: false,
+        fr: false,
+        tv: S5Time::new(999, base).expect("valid"),
+    };
+    let (from_t, to_t) = (CpuTime::from_millis(from), CpuTime::from_millis(to));
+    let mut r = S5TimerRef::from_state(state, from_t).expect("valid");
+    let mut lone = S5Timer::from_state(state, from_t).expect("valid");
+    let w = TimerWord::from_state(state).expect("valid");
+    let mut area = TimerMemory::<1>::from_words([w], from_t);
+    let mut moved = TimerMemory::<1>::from_words([w], from_t);
+    r.call(S5Kind::SPext, to_t, input);
+    lone.call(S5Kind::SPext, to_t, input);
+    area.call(0, S5Kind::SPext, to_t, input).expect("T 0");
+    moved.advance_to(to_t);
+    for (name, value) in [
+        ("reference call", r.state().value),
+        ("S5Timer call", lone.state().value),
+        ("area call", area.get(0).expect("T 0").value),
+        ("area advance_to", moved.get(0).expect("T 0").value),
+    ] {
+        check_eq!(
+            value, expected,
+            "S5TMR-TICK-01: {name}: {n} ticks of {base:?} in ({from}, {to}] ms, one per whole multiple"
+        );
+    }
+    n
+}
+
+/// S5TMR-TICK-01's instants for every base: previous executions just before, at and just after
+/// a multiple of the base (near 0 and near 2^40 ms), and intervals from 0 to five bases and a
+/// few ms, so that every position of both ends relative to the multiples occurs.
+#[test]
+fn exhaustive_tick_instants() {
+    crate::cover::check_ids(&["S5TMR-TICK-01"], || {
+        let mut ticked = 0;
+        for base in TimeBase::ALL {
+            let b = u64::from(base.millis());
+            for k in [0u64, 1, 2, 1 << 40] {
+                for from in [k * b, k * b + 1, (k + 1) * b - 1] {
+                    for dt in [
+                        0,
+                        1,
+                        b - 1,
+                        b,
+                        b + 1,
+                        2 * b - 1,
+                        2 * b,
+                        2 * b + 1,
+                        5 * b + 3,
+                    ] {
+                        ticked += prop_tick_instants(base, from, from + dt);
+                    }
+                }
+            }
+        }
+        check!(ticked > 0, "S5TMR-TICK-01: some interval holds a tick");
+    });
 }
 
 /// The status a timer of `kind` shows in the reachable states (the per-kind invariant, proved
@@ -768,14 +861,14 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
         return true;
     }
     if c.starts() {
-        assert!(
+        check!(
             post.running && loaded(&post),
             "S5TMR-EDGE-01: {imp:?}: a start loads TV and runs: {c:?} -> {post:?}"
         );
     }
     // S5TMR-STOP-01: S = 0 stops S_PULSE and S_ODT; the value is kept, Q = 0.
     if matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt) && !c.input.s && seen.running {
-        assert!(
+        check!(
             !post.running && !post.q && post.value == seen.value && post.base == seen.base,
             "S5TMR-STOP-01: {imp:?}: S = 0 stops, value kept, Q = 0: {c:?} -> {post:?}"
         );
@@ -794,17 +887,17 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
     match c.kind {
         S5Kind::SPulse => {
             if c.rising() {
-                assert!(
+                check!(
                     post.q && post.running && loaded(&post),
                     "SP-Q-01: {imp:?}: a rising S starts the pulse with TV, Q = 1 (even while it runs): {c:?}"
                 );
             } else if !c.input.s {
-                assert!(
+                check!(
                     !post.q && !post.running,
                     "SP-Q-01: {imp:?}: S = 0: Q = 0: {c:?}"
                 );
             } else {
-                assert_eq!(
+                check_eq!(
                     (post.running, post.q),
                     (seen.running, seen.running),
                     "SP-Q-01: {imp:?}: with S held Q = 1 exactly while it runs; Q = 0 when the time runs out: {c:?}"
@@ -817,12 +910,12 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
         }
         S5Kind::SPext => {
             if c.rising() {
-                assert!(
+                check!(
                     post.q && post.running && loaded(&post),
                     "SE-RUN-ON-01: {imp:?}: a rising S (re)starts with TV, Q = 1: {c:?}"
                 );
             } else {
-                assert_eq!(
+                check_eq!(
                     (post.running, post.q, post.value),
                     (seen.running, seen.running, seen.value),
                     "SE-RUN-ON-01: {imp:?}: runs on whatever S does, Q = 1 while it runs: {c:?}"
@@ -835,17 +928,17 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
         }
         S5Kind::SOdt => {
             if c.rising() {
-                assert!(
+                check!(
                     !post.q && post.running && loaded(&post),
                     "SD-Q-01: {imp:?}: a (re)start reloads TV with Q = 0: {c:?}"
                 );
             } else if !c.input.s {
-                assert!(
+                check!(
                     !post.q && !post.running,
                     "SD-Q-01: {imp:?}: S = 0 stops, Q = 0: {c:?}"
                 );
             } else {
-                assert_eq!(
+                check_eq!(
                     (post.running, post.q),
                     (seen.running, !seen.running && seen.q),
                     "SD-Q-01: {imp:?}: with S held Q = 1 once the time has run out: {c:?}"
@@ -858,15 +951,15 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
         }
         S5Kind::SOdts => {
             if c.state.q {
-                assert!(post.q, "SS-Q-01: {imp:?}: Q = 1 stays until R: {c:?}");
+                check!(post.q, "SS-Q-01: {imp:?}: Q = 1 stays until R: {c:?}");
             }
             if c.rising() {
-                assert!(
+                check!(
                     post.running && loaded(&post) && post.q == seen.q,
                     "SS-Q-01: {imp:?}: a rising S restarts with TV, Q kept: {c:?}"
                 );
             } else {
-                assert_eq!(
+                check_eq!(
                     (post.running, post.q, post.value),
                     (seen.running, seen.q, seen.value),
                     "SS-Q-01: {imp:?}: runs on whatever S does; Q = 1 once run out: {c:?}"
@@ -879,17 +972,17 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
         }
         S5Kind::SOffdt => {
             if c.falling() {
-                assert!(
+                check!(
                     post.q && post.running && loaded(&post),
                     "SF-Q-01: {imp:?}: a falling S starts the off-delay, Q = 1: {c:?}"
                 );
             } else if c.rising() {
-                assert!(
+                check!(
                     post.q && !post.running && post.value == seen.value,
                     "SF-Q-01: {imp:?}: a rising S sets Q = 1 and stops the time, value kept: {c:?}"
                 );
             } else {
-                assert_eq!(
+                check_eq!(
                     (post.running, post.q, post.value),
                     (seen.running, seen.q, seen.value),
                     "SF-Q-01: {imp:?}: without an edge Q is the status bit: kept, 0 when run out: {c:?}"
@@ -906,58 +999,64 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
 
 /// S5TMR-RANGE-01 (and S5TMR-LOAD-01 for the area's reads): the value fits 0..=999; BCD is the
 /// valid three-digit form of BI with the base in bits 13-12 and bits 15-14 zero; the duration
-/// the BCD word shows (its digits times the base its bits 13-12 name) is the state's and at
-/// most 9 990 s.
+/// the BCD word shows (its digits times the base its bits 13-12 name) is the state's; the value
+/// and base come from the state before or from the TV (so at most 9 990 s, 999 units of 10 s).
 fn rule_range(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
-    assert!(
+    check!(
         post.value <= 999,
         "S5TMR-RANGE-01: {imp:?}: value {}",
         post.value
     );
     let digits = [(out.bcd >> 8) & 0xF, (out.bcd >> 4) & 0xF, out.bcd & 0xF];
-    assert!(
+    check!(
         digits.iter().all(|&d| d <= 9),
         "S5TMR-RANGE-01: {imp:?}: BCD {:#06X} has a digit above 9",
         out.bcd
     );
-    assert_eq!(
+    check_eq!(
         digits[0] * 100 + digits[1] * 10 + digits[2],
         out.bi,
         "S5TMR-RANGE-01: {imp:?}: BCD {:#06X} is the BCD form of BI {}",
         out.bcd,
         out.bi
     );
-    assert_eq!(
+    check_eq!(
         out.bcd >> 14,
         0,
         "S5TMR-RANGE-01: {imp:?}: bits 15-14 are never produced"
     );
-    assert_eq!(
+    check_eq!(
         u8::try_from((out.bcd >> 12) & 3).expect("two bits"),
         post.base.bits(),
         "S5TMR-RANGE-01: {imp:?}: BCD bits 13-12 are the time base"
     );
     let base_ms = [10u32, 100, 1_000, 10_000][usize::from((out.bcd >> 12) & 3)];
     let shown = u32::from(out.bi) * base_ms;
-    assert_eq!(
+    check_eq!(
         shown,
         u32::from(post.value) * post.base.millis(),
         "S5TMR-RANGE-01: {imp:?}: the BCD word shows the state's duration"
     );
-    assert!(
-        shown <= 9_990_000,
-        "S5TMR-RANGE-01: {imp:?}: {shown} ms above 9 990 s"
+    // The 9 990 s cap follows from the value's range and the base; what can break is where the
+    // value comes from: a step only counts a value down or loads the TV (or R clears it).
+    let tv = c.input.tv;
+    check!(
+        post.value <= c.state.value.max(tv.units())
+            && (post.base == c.state.base || post.base == tv.base() || c.input.r),
+        "S5TMR-RANGE-01: {imp:?}: the value and base come from the state or the TV: {c:?} -> {post:?}"
     );
-    assert_eq!(
-        (out.q, out.bi),
-        (post.q, post.value),
-        "S5TMR-LOAD-01: {imp:?}: A T and L T read the status and the value"
-    );
+    if imp == S5Impl::AreaStl {
+        // Only here are the outputs the STL reads (`A`, `L`, `LC`), not the state itself.
+        check_eq!(
+            (out.q, out.bi),
+            (post.q, post.value),
+            "S5TMR-LOAD-01: {imp:?}: A T and L T read the status and the value"
+        );
+    }
     cover!(
         out.bcd & 0x3000 == 0x3000 && out.bi == 999,
         "S5TMR-RANGE-01: 9 990 s shown"
     );
-    let _ = c;
 }
 
 /// S5TMR-R-01: R = 1 leaves the timer stopped, value and base 0, Q = 0, for every kind, running
@@ -966,15 +1065,16 @@ fn rule_r(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
     if !c.input.r {
         return;
     }
-    assert!(
+    check!(
         !post.running && post.value == 0 && post.base == TimeBase::Ms10 && !post.q,
         "S5TMR-R-01: {imp:?}: R = 1 resets: {c:?} -> {post:?}"
     );
-    assert_eq!(
-        post.s_prev, c.input.s,
+    check_eq!(
+        post.s_prev,
+        c.input.s,
         "S5TMR-R-01: {imp:?}: the S memory is still updated"
     );
-    assert_eq!(
+    check_eq!(
         (out.bi, out.bcd, out.q),
         (0, 0, false),
         "S5TMR-LOAD-01: {imp:?}: after R, L T and LC T read 0"
@@ -991,11 +1091,11 @@ fn rule_edge(imp: S5Impl, c: S5Case, post: &S5State) {
     if c.starts() {
         return;
     }
-    assert!(
+    check!(
         !post.running || c.state.running,
         "S5TMR-EDGE-01: {imp:?}: started without a signal change: {c:?}"
     );
-    assert!(
+    check!(
         post.value <= c.state.value && (post.base == c.state.base || c.input.r),
         "S5TMR-EDGE-01: {imp:?}: reloaded without a signal change: {c:?}"
     );
@@ -1012,7 +1112,7 @@ fn rule_zero(imp: S5Impl, c: S5Case, post: &S5State) {
         return;
     }
     if c.starts() && c.input.tv.units() == 0 {
-        assert!(
+        check!(
             post.running && post.value == 0,
             "S5TMR-ZERO-01: {imp:?}: a start with value 0 stays active in its execution: {c:?}"
         );
@@ -1023,7 +1123,7 @@ fn rule_zero(imp: S5Impl, c: S5Case, post: &S5State) {
         && !c.falling()
         && (c.input.s || !matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt));
     if c.state.running && c.state.value == 0 && quiet {
-        assert!(
+        check!(
             !post.running && post.q == c.state.q_on_expiry,
             "S5TMR-ZERO-01: {imp:?}: found run out at the next execution: {c:?} -> {post:?}"
         );
@@ -1040,21 +1140,42 @@ fn rule_expire_start(imp: S5Impl, c: S5Case, post: &S5State) {
     if c.input.r || !c.starts() {
         return;
     }
-    assert_eq!(
+    check_eq!(
         post.q_on_expiry,
         on_delay(c.kind),
         "S5TMR-EXPIRE-01: {imp:?}: a start of {:?} chooses its expiry status",
         c.kind
     );
     if post.value > 0 {
-        let out = ticked(*post, u64::from(post.value));
-        assert_eq!(
-            out.q,
-            on_delay(c.kind),
+        // The time run out through the implementation's own tick, not the closed form.
+        let out = tick_through(imp, *post, u64::from(post.value));
+        check!(
+            !out.running && out.q == on_delay(c.kind),
             "S5TMR-EXPIRE-01: {imp:?}: {:?} runs out with Q = {}",
             c.kind,
             on_delay(c.kind)
         );
+    }
+}
+
+/// `n` OS ticks of a valid state through the tick of `imp` (the reference's, the word's, or the
+/// area's per-base tick; the timer and the area box share the word's).
+fn tick_through(imp: S5Impl, state: S5State, n: u64) -> S5State {
+    match imp {
+        S5Impl::Reference => {
+            let mut r = S5TimerRef::from_state(state, CpuTime::ZERO).expect("valid");
+            r.tick(n);
+            r.state()
+        }
+        S5Impl::Word | S5Impl::Timer => {
+            TimerWord::from_state(state).expect("valid").tick(n).state()
+        }
+        S5Impl::AreaStl | S5Impl::AreaCall => {
+            let w = TimerWord::from_state(state).expect("valid");
+            let mut area = TimerMemory::<1>::from_words([w], CpuTime::ZERO);
+            area.tick(state.base, n);
+            area.get(0).expect("T 0")
+        }
     }
 }
 
@@ -1071,19 +1192,19 @@ fn rule_fr(imp: S5Impl, c: S5Case, post: &S5State) {
             fr_prev: true,
             ..st
         });
-        assert_eq!(
+        check_eq!(
             run(imp, cleared).0,
             *post,
             "S5TMR-FR-01: {imp:?}: a rising FR clears the S memory and nothing else: {c:?}"
         );
         if !i.r && i.s && c.kind != S5Kind::SOffdt {
-            assert!(
+            check!(
                 post.running && post.value == i.tv.units() && post.base == i.tv.base(),
                 "S5TMR-FR-01: {imp:?}: with S = 1 the timer restarts with TV: {c:?}"
             );
         }
         if !i.s {
-            assert!(
+            check!(
                 !post.running || st.running,
                 "S5TMR-FR-01: {imp:?}: with S = 0 nothing starts: {c:?}"
             );
@@ -1101,7 +1222,7 @@ fn rule_fr(imp: S5Impl, c: S5Case, post: &S5State) {
             })
             .with_input(S5Input { fr: false, ..i });
         let (p, _) = run(imp, plain);
-        assert_eq!(
+        check_eq!(
             S5State { fr_prev: i.fr, ..p },
             *post,
             "S5TMR-FR-01: {imp:?}: FR held or falling does nothing: {c:?}"
@@ -1139,7 +1260,7 @@ fn prop_sf_after_r(c: S5Case) {
             kind: c.kind,
         };
         let (after, _) = run(imp, next);
-        assert!(
+        check!(
             !after.q,
             "SF-Q-01: {imp:?}: after R with S held, Q stays 0 until S changes: {c:?}"
         );
@@ -1158,41 +1279,62 @@ const RULE_TICKS: [u64; 8] = [0, 1, 2, 3, 4, 999, 1000, u64::MAX];
 /// a valid state, S, R and FR, and the six TVs (0, 1 and 999 units, every base). The full state
 /// space is covered by `exhaustive_step_equivalence_and_invariants`; Kani (`kani_s5_rules`)
 /// covers every value, tick count and TV.
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
 #[test]
 fn exhaustive_s5_rules() {
-    let cases: u64 = crate::cover::check(|| {
-        let mut n = 0;
-        for kind in S5Kind::ALL {
-            for value in RULE_VALUES {
-                for base in TimeBase::ALL {
-                    for f in 0..32u8 {
-                        let state = S5State {
-                            running: f & 1 != 0,
-                            value,
-                            base,
-                            q: f & 2 != 0,
-                            q_on_expiry: f & 4 != 0,
-                            s_prev: f & 8 != 0,
-                            fr_prev: f & 16 != 0,
-                        };
-                        for ticks in RULE_TICKS {
-                            for tv in tvs() {
-                                for bits in 0..8u8 {
-                                    let input = S5Input {
-                                        s: bits & 1 != 0,
-                                        r: bits & 2 != 0,
-                                        fr: bits & 4 != 0,
-                                        tv,
-                                    };
-                                    let c = S5Case {
-                                        kind,
-                                        state,
-                                        ticks,
-                                        input,
-                                    };
-                                    n += u64::from(prop_s5_rules(c));
-                                    if bits == 0 && tv == tvs()[0] {
-                                        prop_tick(state, ticks);
+    let cases: u64 = crate::cover::check_ids(
+        &[
+            "S5TMR-TICK-01",
+            "S5TMR-EXPIRE-01",
+            "S5TMR-ZERO-01",
+            "S5TMR-EDGE-01",
+            "S5TMR-R-01",
+            "S5TMR-RANGE-01",
+            "S5TMR-STOP-01",
+            "S5TMR-FR-01",
+            "S5TMR-LOAD-01",
+            "SP-Q-01",
+            "SE-RUN-ON-01",
+            "SD-Q-01",
+            "SS-Q-01",
+            "SF-Q-01",
+            "S5-AREA-01",
+        ],
+        || {
+            let mut n = 0;
+            for kind in S5Kind::ALL {
+                for value in RULE_VALUES {
+                    for base in TimeBase::ALL {
+                        for f in 0..32u8 {
+                            let state = S5State {
+                                running: f & 1 != 0,
+                                value,
+                                base,
+                                q: f & 2 != 0,
+                                q_on_expiry: f & 4 != 0,
+                                s_prev: f & 8 != 0,
+                                fr_prev: f & 16 != 0,
+                            };
+                            for ticks in RULE_TICKS {
+                                for tv in tvs() {
+                                    for bits in 0..8u8 {
+                                        let input = S5Input {
+                                            s: bits & 1 != 0,
+                                            r: bits & 2 != 0,
+                                            fr: bits & 4 != 0,
+                                            tv,
+                                        };
+                                        let c = S5Case {
+                                            kind,
+                                            state,
+                                            ticks,
+                                            input,
+                                        };
+                                        n += u64::from(prop_s5_rules(c));
+                                        if bits == 0 && tv == tvs()[0] {
+                                            prop_tick(state, ticks);
+                                        }
                                     }
                                 }
                             }
@@ -1200,10 +1342,10 @@ fn exhaustive_s5_rules() {
                     }
                 }
             }
-        }
-        n
-    });
-    assert_eq!(
+            n
+        },
+    );
+    check_eq!(
         cases,
         5 * 6 * 4 * 24 * 8 * 6 * 8,
         "every valid case checked"
@@ -1211,7 +1353,10 @@ fn exhaustive_s5_rules() {
 }
 
 /// The bolero harness of every S5 rule: random cases under `cargo test`, a proof over every
-/// kind, valid state, tick count and input under Kani. `#[kani::unwind(17)]`: the longest loops
+/// kind, valid state, tick count and input under Kani. Symbolic: the kind, the state (invalid
+/// ones skipped), the tick count (any `u64`), S, R, FR and the TV (any valid S5TIME); the
+/// implementations are the reference, the word and the area's tick and STL operations (no
+/// division by the base: the area ticks by base). `#[kani::unwind(17)]`: the longest loops
 /// are the area tick's for one tick (`TimerWord::tick_once_all` takes the area's words in groups
 /// of 16, the last ones on a padded copy: 16 iterations per loop) and its exit; the others are
 /// shorter (the loop over `IMPLS`, 3 under Kani; the area's 2 words for more than one tick).
@@ -1227,7 +1372,8 @@ fn kani_s5_rules() {
         });
 }
 
-/// S5-EQUIV-01 for every state, tick count and input (no loop).
+/// S5-EQUIV-01 for every state, tick count and input. Symbolic: the kind, the state, the tick
+/// count (any `u64`), S, R, FR and the TV. No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
@@ -1241,7 +1387,8 @@ fn kani_step_equivalence() {
         });
 }
 
-/// S5-EQUIV-01 on the bits of a word: valid exactly when its state is (no loop).
+/// S5-EQUIV-01 on the bits of a word: valid exactly when its state is. Symbolic: the 32 bits
+/// (once masked to the 21 of the fields, once whole). No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_cell_word() {
@@ -1254,14 +1401,16 @@ fn kani_cell_word() {
         });
 }
 
-/// S5-AREA-01 on a four-timer area: `#[kani::unwind(17)]` covers the one-tick path's loops over
-/// a padded group of 16 words (the area's 4 words are copied into one), the loop over the 4 words
-/// for more ticks, and the check's loop over the 4 timers, each with its exit.
+/// S5-AREA-01 on a two-timer area. Symbolic: both timers' states (any, invalid ones skipped),
+/// the tick base, the tick count `n` (any `u64`). The area's one-tick path runs its group code on
+/// a padded copy of 16 words whatever the area's size, so two timers keep the rest small.
+/// `#[kani::unwind(17)]`: that path's loops over the 16 words (16 iterations and the exit); the
+/// loops over the area's 2 words and the check's over the 2 timers are shorter.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_area_tick() {
     bolero::check!()
-        .with_type::<([S5State; 4], TimeBase, u64)>()
+        .with_type::<([S5State; 2], TimeBase, u64)>()
         .with_iterations(20_000)
         .for_each(|&(states, base, n)| {
             prop_area_tick(states, base, n);
@@ -1278,12 +1427,13 @@ pub fn prop_timer_call(c: S5Case, base: TimeBase, last: u32, dt: u32) {
     let mut r = S5TimerRef::from_state(state, last).expect("valid");
     let mut t = S5Timer::from_state(state, last).expect("valid");
     let (a, b) = (r.call(c.kind, now, c.input), t.call(c.kind, now, c.input));
-    assert_eq!(
-        a, b,
+    check_eq!(
+        a,
+        b,
         "S5-EQUIV-01: S5Timer::call outputs at {now:?} from {last:?}"
     );
-    assert_eq!(t.state(), r.state(), "S5-EQUIV-01: S5Timer::call state");
-    assert_eq!(
+    check_eq!(t.state(), r.state(), "S5-EQUIV-01: S5Timer::call state");
+    check_eq!(
         (t.last_call(), r.last_call()),
         (now, now),
         "S5-EQUIV-01: last call"
@@ -1293,8 +1443,12 @@ pub fn prop_timer_call(c: S5Case, base: TimeBase, last: u32, dt: u32) {
 macro_rules! timer_call_harness {
     ($name:ident, $base:expr) => {
         /// `S5Timer::call` against the reference for this base (see [`prop_timer_call`]).
+        /// Symbolic: the kind, the state (its base replaced by this one), S, R, FR, the TV, the
+        /// previous call's time (`u32` ms) and the step (below 200 000 ms). No loop. The two
+        /// divisions of the tick count are by this constant base; kissat, for the 64-bit
+        /// division and multiplication (a choice to be measured by the workflow's first runs).
         #[test]
-        #[cfg_attr(kani, kani::proof)]
+        #[cfg_attr(kani, kani::proof, kani::solver(kissat))]
         fn $name() {
             bolero::check!()
                 .with_type::<(S5Case, u32, u32)>()
@@ -1309,24 +1463,44 @@ timer_call_harness!(kani_s5_timer_call_100ms, TimeBase::Ms100);
 timer_call_harness!(kani_s5_timer_call_1s, TimeBase::S1);
 timer_call_harness!(kani_s5_timer_call_10s, TimeBase::S10);
 
-/// S5-AREA-01 with `advance_to` over three timers of any states: the area's clock moved from
-/// `from` to `to` gives each timer the ticks of its own base in `(from, to]`, as the reference
-/// counts them from the clock.
-pub fn prop_advance_to(states: [S5State; 3], from: u32, dt: u32) {
+/// The ticks of a base of `b` ms in `(from, to]` in closed form (the multiples of `b` up to `to`
+/// minus those up to `from`), written here; `b` is a constant in every harness that calls it.
+pub fn ticks_closed(from: u64, to: u64, b: u64) -> u64 {
+    to / b - from / b
+}
+
+/// S5-AREA-01 with `advance_to` over three timers: two of base `base`, one of the next base
+/// (`S5TMR-TICK-01`'s instants from [`ticks_closed`]); the area's clock moved from `from` to
+/// `to` gives each timer the ticks of its own base in `(from, to]`. The bases are constants, so
+/// that no division is by a symbolic base.
+pub fn prop_advance_to(states: [S5State; 3], base: TimeBase, from: u32, dt: u32) {
+    let other = TimeBase::from_bits((base.bits() + 1) % 4);
+    let states = [
+        S5State { base, ..states[0] },
+        S5State { base, ..states[1] },
+        S5State {
+            base: other,
+            ..states[2]
+        },
+    ];
+    if !states.iter().all(S5State::is_valid) {
+        return;
+    }
     let from = CpuTime::from_millis(u64::from(from));
     let to = from.add_millis(u64::from(dt));
     let words = states.map(|s| TimerWord::from_state(s).expect("valid"));
     let mut area = TimerMemory::<3>::from_words(words, from);
     area.advance_to(to);
-    assert_eq!(
+    check_eq!(
         area.now(),
         to,
         "S5-AREA-01: the area's clock is at the new time"
     );
     for (i, &s) in states.iter().enumerate() {
+        let b = u64::from(if i < 2 { base } else { other }.millis());
         let mut r = S5TimerRef::from_state(s, from).expect("valid");
-        r.tick(plc_timers::s5::ticks_between(from, to, s.base));
-        assert_eq!(
+        r.tick(ticks_closed(from.as_millis(), to.as_millis(), b));
+        check_eq!(
             area.get(i),
             Ok(r.state()),
             "S5-AREA-01: advance_to gives timer {i} the ticks of its base"
@@ -1334,33 +1508,69 @@ pub fn prop_advance_to(states: [S5State; 3], from: u32, dt: u32) {
     }
 }
 
-/// `advance_to` over three timers: `#[kani::unwind(17)]` covers its loop over the 4 time bases
-/// (`TimeBase::ALL`), the one-tick path's loops over a padded group of 16 words, the loop over
-/// the 3 words for more ticks, and the check's loop over the 3 timers, each with its exit (at
-/// most 16 + 1).
-#[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
-fn kani_advance_to() {
-    bolero::check!()
-        .with_type::<([S5State; 3], u32, u32)>()
-        .with_iterations(20_000)
-        .for_each(|&(states, from, dt)| prop_advance_to(states, from, dt % 100_000));
+macro_rules! advance_to_harness {
+    ($name:ident, $base:expr) => {
+        /// `advance_to` over three timers whose bases are constants (see [`prop_advance_to`]).
+        /// Symbolic: the three states (any; invalid ones skipped), the clock `from` (`u32` ms) and
+        /// the step `dt` (below 100 000 ms). `#[kani::unwind(17)]`: `advance_to`'s loop over the
+        /// 4 bases, the one-tick path's loops over a padded group of 16 words (16 iterations and
+        /// the exit, the largest), the loop over the 3 words for more ticks, the check's over the
+        /// 3 timers.
+        #[test]
+        #[cfg_attr(kani, kani::proof, kani::unwind(17), kani::solver(kissat))]
+        fn $name() {
+            bolero::check!()
+                .with_type::<([S5State; 3], u32, u32)>()
+                .with_iterations(5_000)
+                .for_each(|&(states, from, dt)| prop_advance_to(states, $base, from, dt % 100_000));
+        }
+    };
 }
 
-/// S5-EQUIV-02: every sequence of three executions from power-up (any inputs and TVs, time
-/// steps from a tick-boundary set) through the reference, an `S5Timer`, the area's box and its
-/// STL operations. `#[kani::unwind(17)]`: the sequence loop runs 3 times, `advance_to` loops
-/// over the 4 time bases, and a one-tick pass over the area's one word runs the group code on
-/// a padded copy of 16 words (the bound is the largest, 16, plus the exit).
-#[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
-fn kani_sequence_equivalence() {
-    const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
-    bolero::check!()
-        .with_type::<(S5Kind, [(u8, S5Input); 3])>()
-        .with_iterations(20_000)
-        .for_each(|&(kind, steps)| {
-            let steps = steps.map(|(d, i)| (DT[usize::from(d) % DT.len()], i));
-            prop_sequence_equivalence(kind, &steps);
-        });
+advance_to_harness!(kani_advance_to_10ms, TimeBase::Ms10);
+advance_to_harness!(kani_advance_to_100ms, TimeBase::Ms100);
+advance_to_harness!(kani_advance_to_1s, TimeBase::S1);
+advance_to_harness!(kani_advance_to_10s, TimeBase::S10);
+
+macro_rules! sequence_harness {
+    ($name:ident, $base:expr) => {
+        /// S5-EQUIV-02 with one constant time base: every sequence of three executions (any kind,
+        /// S and FR, any TV units of this base, time steps from a tick-boundary set) from a
+        /// stopped timer of this base, through the reference, an `S5Timer`, the area's box and
+        /// its STL operations. R, which sets the base to 10 ms, is only in the 10 ms harness, so
+        /// that every division by the timer's base is by a constant. Symbolic: the kind, per step
+        /// S, FR, the TV's units (0..=999) and an index into the steps. `#[kani::unwind(17)]`: the
+        /// sequence loop (3 iterations), `advance_to`'s loop over the 4 bases, and the one-tick
+        /// path's loops over a padded group of 16 words (16 and the exit, the largest).
+        #[test]
+        #[cfg_attr(kani, kani::proof, kani::unwind(17), kani::solver(kissat))]
+        fn $name() {
+            const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
+            let base: TimeBase = $base;
+            bolero::check!()
+                .with_type::<(S5Kind, [(u8, bool, bool, bool, u16); 3])>()
+                .with_iterations(5_000)
+                .for_each(|&(kind, steps)| {
+                    let steps = steps.map(|(d, s, r, fr, units)| {
+                        let input = S5Input {
+                            s,
+                            r: r && base == TimeBase::Ms10,
+                            fr,
+                            tv: S5Time::new(units % 1_000, base).expect("at most 999 units"),
+                        };
+                        (DT[usize::from(d) % DT.len()], input)
+                    });
+                    let initial = S5State {
+                        base,
+                        ..S5State::RESET
+                    };
+                    prop_sequence_equivalence_from(kind, initial, &steps);
+                });
+        }
+    };
 }
+
+sequence_harness!(kani_sequence_equivalence_10ms, TimeBase::Ms10);
+sequence_harness!(kani_sequence_equivalence_100ms, TimeBase::Ms100);
+sequence_harness!(kani_sequence_equivalence_1s, TimeBase::S1);
+sequence_harness!(kani_sequence_equivalence_10s, TimeBase::S10);

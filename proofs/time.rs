@@ -1,6 +1,7 @@
 //! Properties of the time formats: S5TIME decoding and encoding, literal round-trips for
 //! S5TIME and TIME.
 
+use crate::cover::{check, check_eq};
 use plc_timers::time::{bcd3_decode, bcd3_encode, LiteralErrorKind, S5Time, Time, TimeBase};
 use proptest::prelude::*;
 
@@ -11,28 +12,28 @@ pub fn prop_word_decode(word: u16) {
     let digits = [(word >> 8) & 0xF, (word >> 4) & 0xF, word & 0xF];
     match S5Time::from_word(word) {
         Ok(t) => {
-            assert!(
+            check!(
                 digits.iter().all(|&d| d <= 9),
                 "S5T-BCD-01: W#16#{word:04X} accepted"
             );
-            assert_eq!(
+            check_eq!(
                 t.units(),
                 digits[0] * 100 + digits[1] * 10 + digits[2],
                 "S5T-WORD-01"
             );
-            assert_eq!(
+            check_eq!(
                 t.base().bits(),
                 ((word >> 12) & 3) as u8,
                 "S5T-WORD-01: base bits"
             );
-            assert!(t.as_millis() <= S5Time::MAX_MILLIS, "S5T-RANGE-01");
-            assert_eq!(
+            check!(t.as_millis() <= S5Time::MAX_MILLIS, "S5T-RANGE-01");
+            check_eq!(
                 t.to_word(),
                 word & 0x3FFF,
                 "S5T-WORD-01: bits 15-14 ignored, never produced"
             );
         }
-        Err(_) => assert!(
+        Err(_) => check!(
             digits.iter().any(|&d| d > 9),
             "S5T-BCD-01: W#16#{word:04X} rejected"
         ),
@@ -45,44 +46,91 @@ pub fn prop_from_millis(ms: u64) {
     match S5Time::from_millis(ms) {
         Ok(t) => {
             let b = u64::from(t.base().millis());
-            assert!(
+            check!(
                 u64::from(t.as_millis()) <= ms && ms - u64::from(t.as_millis()) < b,
                 "S5T-AUTO-BASE-01: rounded down by less than one unit"
             );
             if let Some(finer) = TimeBase::ALL.get(usize::from(t.base().bits()).wrapping_sub(1)) {
-                assert!(
+                check!(
                     ms / u64::from(finer.millis()) > 999,
                     "S5T-AUTO-BASE-01: a finer base would fit"
                 );
             }
         }
-        Err(_) => assert!(
+        Err(_) => check!(
             ms > u64::from(S5Time::MAX_MILLIS),
             "S5T-RANGE-01: {ms} ms rejected"
         ),
     }
 }
 
-/// S5T-LIT-01: `Display` then parse gives the same duration, and the automatic encoding of it.
+/// The literal of `millis` as the rules spell it, computed here from the rule text and not by
+/// the crate: the components from the largest unit down (`D` only when `days`), each a decimal
+/// number and its upper-case unit, zero components left out, `sep` between two, and `0MS` for
+/// zero (TIME-LIT-01: `T#2S_200MS`; S5T-LIT-01: `S5T#2M7S`, without underscores).
+pub fn expected_components(millis: u64, days: bool, sep: &str) -> String {
+    const UNITS: [(u64, &str); 5] = [
+        (24 * 60 * 60 * 1_000, "D"),
+        (60 * 60 * 1_000, "H"),
+        (60 * 1_000, "M"),
+        (1_000, "S"),
+        (1, "MS"),
+    ];
+    let mut parts = Vec::new();
+    let mut rest = millis;
+    for (size, unit) in UNITS.iter().skip(usize::from(!days)) {
+        let n = rest / size;
+        rest -= n * size;
+        if n != 0 {
+            parts.push(format!("{n}{unit}"));
+        }
+    }
+    if parts.is_empty() {
+        parts.push(String::from("0MS"));
+    }
+    parts.join(sep)
+}
+
+/// S5T-LIT-01: `Display` gives `S5T#` and the duration without underscores ([`expected_components`]);
+/// parsing it gives the same duration, and the automatic encoding of it.
 pub fn prop_s5_literal_round_trip(t: S5Time) {
     let text = t.to_string();
+    check_eq!(
+        text,
+        format!(
+            "S5T#{}",
+            expected_components(u64::from(t.as_millis()), false, "")
+        ),
+        "S5T-LIT-01: Display of {t:?}: S5T#, components from H down, no underscores"
+    );
     let back: S5Time = text
         .parse()
         .unwrap_or_else(|e| panic!("S5T-LIT-01: {text} does not parse: {e}"));
-    assert_eq!(back.as_millis(), t.as_millis(), "S5T-LIT-01: {text}");
-    assert_eq!(
+    check_eq!(back.as_millis(), t.as_millis(), "S5T-LIT-01: {text}");
+    check_eq!(
         Ok(back),
         S5Time::from_millis(u64::from(t.as_millis())),
         "S5T-LIT-01: automatic base"
     );
 }
 
-/// TIME-LIT-01: `Display` then parse gives the same TIME, for every value of the range.
+/// TIME-LIT-01: `Display` gives `T#`, a minus for a negative value, and the components from
+/// days down separated by `_` ([`expected_components`]); parsing it gives the same TIME, for
+/// every value of the range.
 pub fn prop_time_literal_round_trip(ms: i32) {
     let t = Time::from_millis(ms);
     let text = t.to_string();
-    assert_eq!(text.parse::<Time>(), Ok(t), "TIME-LIT-01: {text}");
-    assert_eq!(
+    let sign = if ms < 0 { "-" } else { "" };
+    check_eq!(
+        text,
+        format!(
+            "T#{sign}{}",
+            expected_components(u64::from(ms.unsigned_abs()), true, "_")
+        ),
+        "TIME-LIT-01: Display of {ms} ms: T#, sign, components from D down joined by _"
+    );
+    check_eq!(text.parse::<Time>(), Ok(t), "TIME-LIT-01: {text}");
+    check_eq!(
         ms.to_string().parse::<Time>(),
         Ok(t),
         "TIME-LIT-01: plain milliseconds"
@@ -95,23 +143,23 @@ pub fn prop_time_literal_round_trip(ms: i32) {
 pub fn prop_auto_encoding(t: S5Time) {
     let a = S5Time::from_millis(u64::from(t.as_millis()))
         .unwrap_or_else(|e| panic!("S5T-RANGE-01: {t:?} has no encoding: {e}"));
-    assert_eq!(
+    check_eq!(
         a.as_millis(),
         t.as_millis(),
         "S5T-AUTO-BASE-01: same duration"
     );
-    assert!(
+    check!(
         a.base() <= t.base(),
         "S5T-AUTO-BASE-01: never a coarser base"
     );
-    assert_eq!(
+    check_eq!(
         a == t,
         a.base() == t.base(),
         "S5T-AUTO-BASE-01: the value itself iff on the automatic base"
     );
-    assert_eq!(t.to_automatic(), a, "S5T-AUTO-BASE-01: to_automatic");
-    assert_eq!(t.is_automatic(), a == t, "S5T-AUTO-BASE-01: is_automatic");
-    assert_eq!(
+    check_eq!(t.to_automatic(), a, "S5T-AUTO-BASE-01: to_automatic");
+    check_eq!(t.is_automatic(), a == t, "S5T-AUTO-BASE-01: is_automatic");
+    check_eq!(
         S5Time::from_word(a.to_word()),
         Ok(a),
         "S5T-WORD-01: the automatic word decodes to itself"
@@ -122,12 +170,12 @@ pub fn prop_auto_encoding(t: S5Time) {
 /// without the base bits.
 pub fn prop_bcd3(v: u16) {
     if v <= 999 {
-        assert_eq!(bcd3_decode(bcd3_encode(v)), Ok(v), "S5T-BCD-01: {v}");
-        assert!(bcd3_encode(v) <= 0x999, "S5T-BCD-01: three digits");
+        check_eq!(bcd3_decode(bcd3_encode(v)), Ok(v), "S5T-BCD-01: {v}");
+        check!(bcd3_encode(v) <= 0x999, "S5T-BCD-01: three digits");
         let t = S5Time::new(v, TimeBase::S10).expect("units <= 999");
-        assert_eq!(t.bcd(), t.to_word() & 0x0FFF, "S5T-BCD-01: bcd field");
+        check_eq!(t.bcd(), t.to_word() & 0x0FFF, "S5T-BCD-01: bcd field");
     } else {
-        assert!(
+        check!(
             S5Time::new(v, TimeBase::Ms10).is_err(),
             "S5T-WORD-01: {v} units"
         );
@@ -142,19 +190,19 @@ pub fn prop_time_arith(a: i32, b: i32) {
     let clamp =
         |v: i64| Time::from_millis(v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32);
     let (sum, diff) = (i64::from(a) + i64::from(b), i64::from(a) - i64::from(b));
-    assert_eq!(ta.checked_add(tb), exact(sum), "TIME-ARITH-01: {a} + {b}");
-    assert_eq!(ta.checked_sub(tb), exact(diff), "TIME-ARITH-01: {a} - {b}");
-    assert_eq!(
+    check_eq!(ta.checked_add(tb), exact(sum), "TIME-ARITH-01: {a} + {b}");
+    check_eq!(ta.checked_sub(tb), exact(diff), "TIME-ARITH-01: {a} - {b}");
+    check_eq!(
         ta.saturating_add(tb),
         clamp(sum),
         "TIME-ARITH-01: {a} +| {b}"
     );
-    assert_eq!(
+    check_eq!(
         ta.saturating_sub(tb),
         clamp(diff),
         "TIME-ARITH-01: {a} -| {b}"
     );
-    assert_eq!(
+    check_eq!(
         ta.checked_neg(),
         exact(-i64::from(a)),
         "TIME-ARITH-01: -{a}"
@@ -166,13 +214,13 @@ pub fn prop_time_arith(a: i32, b: i32) {
 pub fn prop_s5_parse_total(text: &str) {
     match text.parse::<S5Time>() {
         Ok(t) => {
-            assert!(t.units() <= 999, "S5T-WORD-01: {text}");
-            assert!(t.as_millis() <= S5Time::MAX_MILLIS, "S5T-RANGE-01: {text}");
+            check!(t.units() <= 999, "S5T-WORD-01: {text}");
+            check!(t.as_millis() <= S5Time::MAX_MILLIS, "S5T-RANGE-01: {text}");
         }
-        Err(e) => assert!(e.position <= text.len(), "S5T-LIT-02: {text}: {e:?}"),
+        Err(e) => check!(e.position <= text.len(), "S5T-LIT-02: {text}: {e:?}"),
     }
     if let Err(e) = text.parse::<Time>() {
-        assert!(e.position <= text.len(), "TIME-LIT-01: {text}: {e:?}");
+        check!(e.position <= text.len(), "TIME-LIT-01: {text}: {e:?}");
     }
 }
 
@@ -184,7 +232,9 @@ pub fn prop_s5_literal_components(parts: [Option<u32>; 4], underscores: bool, lo
     let mut text = String::from(if lower { "s5t#" } else { "S5T#" });
     let mut total = 0u64;
     let mut first = true;
-    for (part, (unit, ms)) in parts.iter().zip(UNITS) {
+    // The byte offset of the last component's unit, and the unit's index.
+    let mut last = None;
+    for (i, (part, (unit, ms))) in parts.iter().zip(UNITS).enumerate() {
         let Some(v) = *part else { continue };
         if !first && underscores {
             text.push('_');
@@ -192,6 +242,7 @@ pub fn prop_s5_literal_components(parts: [Option<u32>; 4], underscores: bool, lo
         first = false;
         total += u64::from(v) * ms;
         text.push_str(&v.to_string());
+        last = Some((text.len(), i));
         text.push_str(&if lower {
             unit.to_ascii_lowercase()
         } else {
@@ -199,28 +250,82 @@ pub fn prop_s5_literal_components(parts: [Option<u32>; 4], underscores: bool, lo
         });
     }
     let parsed = text.parse::<S5Time>();
+    // S5T-LIT-01: a sign is rejected with its own error, which points at the sign (S5T-LIT-02).
+    let signed = format!("{}-{}", &text[..4], &text[4..]);
+    check_eq!(
+        signed.parse::<S5Time>().map_err(|e| (e.kind, e.position)),
+        Err((LiteralErrorKind::Negative, 4)),
+        "S5T-LIT-01: {signed}: an S5TIME is never negative, the error is at the sign"
+    );
+    if let Some((unit_at, i)) = last {
+        prop_s5_literal_faults(&text, unit_at, i, underscores);
+    }
     if first {
-        assert_eq!(
+        check_eq!(
             parsed.map_err(|e| e.kind),
             Err(LiteralErrorKind::NoComponents),
             "{text}"
         );
     } else if total > u64::from(S5Time::MAX_MILLIS) {
-        assert_eq!(
-            parsed.map_err(|e| e.kind),
-            Err(LiteralErrorKind::OutOfRange),
-            "S5T-RANGE-01: {text}"
+        check_eq!(
+            parsed.map_err(|e| (e.kind, e.position)),
+            Err((LiteralErrorKind::OutOfRange, 4)),
+            "S5T-RANGE-01: {text} is above 9 990 s; S5T-LIT-02: the error is at the value's start"
         );
     } else {
-        assert_eq!(
+        check_eq!(
             parsed,
             S5Time::from_millis(total).map_err(|_| unreachable!()),
             "S5T-LIT-01: {text}"
         );
         let t = parsed.expect("checked above");
-        assert!(
+        check!(
             u64::from(t.as_millis()) <= total,
             "S5T-AUTO-BASE-01: rounded down: {text}"
+        );
+    }
+}
+
+/// S5T-LIT-02: an error points at the faulty token. `text` is a well-formed literal whose last
+/// component's unit starts at byte `unit_at` (the unit's index `i` in H, M, S, MS); each fault is made at a place computed here, so the expected offset is
+/// known independently of the parser: a fraction after that number (at the `.`), a component
+/// `1H` appended (a unit out of order, at its letter), `1000MS` appended after a larger unit (a
+/// later component out of its range, at its number) and `1X` appended (an unknown unit, at it).
+pub fn prop_s5_literal_faults(text: &str, unit_at: usize, i: usize, sep: bool) {
+    use plc_timers::time::Unit;
+    let fault = |t: String, kind: LiteralErrorKind, at: usize, what: &str| {
+        check_eq!(
+            t.parse::<S5Time>().map_err(|e| (e.kind, e.position)),
+            Err((kind, at)),
+            "S5T-LIT-02: {t}: {what} at byte {at}"
+        );
+    };
+    fault(
+        format!("{}.5{}", &text[..unit_at], &text[unit_at..]),
+        LiteralErrorKind::Fraction,
+        unit_at,
+        "a fraction, the error",
+    );
+    let joint = if sep { "_" } else { "" };
+    let next = text.len() + joint.len();
+    fault(
+        format!("{text}{joint}1H"),
+        LiteralErrorKind::UnitOrder(Unit::Hour),
+        next + 1,
+        "a unit out of order, the error at its letter",
+    );
+    fault(
+        format!("{text}{joint}1X"),
+        LiteralErrorKind::UnknownUnit,
+        next + 1,
+        "an unknown unit, the error at it",
+    );
+    if i < 3 {
+        fault(
+            format!("{text}{joint}1000MS"),
+            LiteralErrorKind::ComponentRange(Unit::Milli, 1_000),
+            next,
+            "a later component above its range, the error at its number",
         );
     }
 }
@@ -228,23 +333,27 @@ pub fn prop_s5_literal_components(parts: [Option<u32>; 4], underscores: bool, lo
 /// Exhaustive: all 65 536 raw words.
 #[test]
 fn exhaustive_all_words() {
-    let valid = (0..=u16::MAX)
-        .filter(|&w| S5Time::from_word(w).is_ok())
-        .count();
-    (0..=u16::MAX).for_each(prop_word_decode);
-    assert_eq!(
-        valid,
-        4 * 4_000,
-        "4 000 valid value fields x the 4 ignored values of bits 15-14"
-    );
+    crate::cover::check_ids(&["S5T-WORD-01", "S5T-BCD-01", "S5T-RANGE-01"], || {
+        let valid = (0..=u16::MAX)
+            .filter(|&w| S5Time::from_word(w).is_ok())
+            .count();
+        (0..=u16::MAX).for_each(prop_word_decode);
+        check_eq!(
+            valid,
+            4 * 4_000,
+            "4 000 valid value fields x the 4 ignored values of bits 15-14"
+        );
+    });
 }
 
 /// Exhaustive: every duration from 0 to 10 000 000 ms (past the 9 990 000 maximum): the
 /// automatic base and rounding.
 #[test]
 fn exhaustive_from_millis() {
-    (0..=10_000_000u64).for_each(prop_from_millis);
-    prop_from_millis(u64::MAX);
+    crate::cover::check_ids(&["S5T-AUTO-BASE-01"], || {
+        (0..=10_000_000u64).for_each(prop_from_millis);
+        prop_from_millis(u64::MAX);
+    });
 }
 
 /// Exhaustive: the literal round-trip of all 4 000 valid words (word -> literal -> S5TIME has the
@@ -259,13 +368,13 @@ fn exhaustive_s5_literal_round_trip() {
         prop_s5_literal_round_trip(t);
         if S5Time::from_millis(u64::from(t.as_millis())) == Ok(t) {
             same_word += 1;
-            assert_eq!(
+            check_eq!(
                 t.to_string().parse::<S5Time>().map(S5Time::to_word),
                 Ok(word)
             );
         }
     }
-    assert!(
+    check!(
         same_word >= 1_000,
         "{same_word} words are their own automatic encoding"
     );
@@ -275,20 +384,22 @@ fn exhaustive_s5_literal_round_trip() {
 /// on both sides of 0.
 #[test]
 fn exhaustive_time_round_trip_near_zero_and_ends() {
-    (-2_000_000..=2_000_000).for_each(prop_time_literal_round_trip);
-    for ms in [
-        i32::MIN,
-        i32::MIN + 1,
-        i32::MAX - 1,
-        i32::MAX,
-        86_400_000,
-        -86_400_000,
-        3_600_000,
-        59_999,
-        60_000,
-    ] {
-        prop_time_literal_round_trip(ms);
-    }
+    crate::cover::check_ids(&["TIME-LIT-01"], || {
+        (-2_000_000..=2_000_000).for_each(prop_time_literal_round_trip);
+        for ms in [
+            i32::MIN,
+            i32::MIN + 1,
+            i32::MAX - 1,
+            i32::MAX,
+            86_400_000,
+            -86_400_000,
+            3_600_000,
+            59_999,
+            60_000,
+        ] {
+            prop_time_literal_round_trip(ms);
+        }
+    });
 }
 
 /// Exhaustive: the automatic-encoding round trip of all 4 000 valid words (bits 15-14 zero; they
@@ -307,13 +418,13 @@ fn exhaustive_auto_encoding_all_valid_words() {
         if t.is_automatic() {
             automatic += 1;
         }
-        assert_eq!(
+        check_eq!(
             t.is_automatic(),
             t.base() == TimeBase::Ms10 || t.units() >= 100,
             "W#16#{word:04X}"
         );
     }
-    assert_eq!((valid, automatic), (4_000, 3_700));
+    check_eq!((valid, automatic), (4_000, 3_700));
 }
 
 /// Exhaustive: the BCD helpers on every u16 (0..=999 round-trip, above rejected by `new`).
@@ -326,27 +437,29 @@ fn exhaustive_bcd3() {
 /// (where the checked forms switch between Some and None).
 #[test]
 fn time_arith_edges() {
-    let edges = [
-        i32::MIN,
-        i32::MIN + 1,
-        i32::MIN + 2,
-        -2,
-        -1,
-        0,
-        1,
-        2,
-        i32::MAX - 2,
-        i32::MAX - 1,
-        i32::MAX,
-        i32::MIN / 2,
-        i32::MAX / 2,
-        i32::MAX / 2 + 1,
-    ];
-    for a in edges {
-        for b in edges {
-            prop_time_arith(a, b);
+    crate::cover::check_ids(&["TIME-ARITH-01"], || {
+        let edges = [
+            i32::MIN,
+            i32::MIN + 1,
+            i32::MIN + 2,
+            -2,
+            -1,
+            0,
+            1,
+            2,
+            i32::MAX - 2,
+            i32::MAX - 1,
+            i32::MAX,
+            i32::MIN / 2,
+            i32::MAX / 2,
+            i32::MAX / 2 + 1,
+        ];
+        for a in edges {
+            for b in edges {
+                prop_time_arith(a, b);
+            }
         }
-    }
+    });
 }
 
 /// S5T-LIT-01 on a grid of component values: each component absent, zero, typical or at its
@@ -354,44 +467,46 @@ fn time_arith_edges() {
 /// across the 9 990 s maximum; with and without underscores, upper and lower case.
 #[test]
 fn exhaustive_s5_literal_components_small() {
-    let firsts = [
-        None,
-        Some(0),
-        Some(1),
-        Some(2),
-        Some(3),
-        Some(90),
-        Some(166),
-        Some(167),
-        Some(9_990),
-        Some(9_991),
-    ];
-    let mids = [None, Some(0), Some(7), Some(46), Some(59)];
-    let mss = [None, Some(0), Some(5), Some(10), Some(990), Some(999)];
-    for underscores in [false, true] {
-        for lower in [false, true] {
-            for h in firsts {
-                for m in mids {
-                    for s in mids {
-                        for ms in mss {
-                            // Keep later components in range; the first present may be large.
-                            let parts = [h, m, s, ms];
-                            let first = parts.iter().position(Option::is_some);
-                            let ok = parts.iter().enumerate().all(|(i, p)| match (p, first) {
-                                (Some(v), Some(f)) if i > f => *v < [24, 60, 60, 1_000][i],
-                                _ => true,
-                            });
-                            if ok {
-                                prop_s5_literal_components(parts, underscores, lower);
+    crate::cover::check_ids(&["S5T-LIT-01", "S5T-LIT-02"], || {
+        let firsts = [
+            None,
+            Some(0),
+            Some(1),
+            Some(2),
+            Some(3),
+            Some(90),
+            Some(166),
+            Some(167),
+            Some(9_990),
+            Some(9_991),
+        ];
+        let mids = [None, Some(0), Some(7), Some(46), Some(59)];
+        let mss = [None, Some(0), Some(5), Some(10), Some(990), Some(999)];
+        for underscores in [false, true] {
+            for lower in [false, true] {
+                for h in firsts {
+                    for m in mids {
+                        for s in mids {
+                            for ms in mss {
+                                // Keep later components in range; the first present may be large.
+                                let parts = [h, m, s, ms];
+                                let first = parts.iter().position(Option::is_some);
+                                let ok = parts.iter().enumerate().all(|(i, p)| match (p, first) {
+                                    (Some(v), Some(f)) if i > f => *v < [24, 60, 60, 1_000][i],
+                                    _ => true,
+                                });
+                                if ok {
+                                    prop_s5_literal_components(parts, underscores, lower);
+                                }
                             }
                         }
                     }
                 }
             }
         }
-    }
-    // LAD manual §9.1, Table 9-2's maximum, spelled as in the manual.
-    prop_s5_literal_components([Some(2), Some(46), Some(30), None], true, false);
+        // LAD manual §9.1, Table 9-2's maximum, spelled as in the manual.
+        prop_s5_literal_components([Some(2), Some(46), Some(30), None], true, false);
+    });
 }
 
 #[cfg(not(kani))]
@@ -439,18 +554,18 @@ proptest! {
 /// `ms` exists (`from_millis_i64`) exactly when it is within the 32-bit range.
 pub fn prop_time_range(ms: i64) {
     let inside = (-(1i64 << 31)..=(1i64 << 31) - 1).contains(&ms);
-    assert_eq!(
+    check_eq!(
         Time::from_millis_i64(ms).map(|t| i64::from(t.as_millis())),
         inside.then_some(ms),
         "TIME-RANGE-01: {ms} ms is a TIME exactly when it fits 32 bits"
     );
     let text = format!("T#{ms}MS");
     match text.parse::<Time>() {
-        Ok(t) => assert!(
+        Ok(t) => check!(
             inside && i64::from(t.as_millis()) == ms,
             "TIME-RANGE-01: {text} parses to itself"
         ),
-        Err(e) => assert!(
+        Err(e) => check!(
             !inside && e.kind == LiteralErrorKind::OutOfRange,
             "TIME-RANGE-01: {text}: {e:?}"
         ),
@@ -460,42 +575,44 @@ pub fn prop_time_range(ms: i64) {
 /// TIME-RANGE-01 at the ends, spelled as the manual does.
 #[test]
 fn time_range_ends() {
-    assert_eq!(
-        "T#-24D_20H_31M_23S_648MS"
-            .parse::<Time>()
-            .map(Time::as_millis),
-        Ok(i32::MIN),
-        "TIME-RANGE-01: the lower end"
-    );
-    assert_eq!(
-        "T#24D_20H_31M_23S_647MS"
-            .parse::<Time>()
-            .map(Time::as_millis),
-        Ok(i32::MAX),
-        "TIME-RANGE-01: the upper end"
-    );
-    for past in ["T#-24D_20H_31M_23S_649MS", "T#24D_20H_31M_23S_648MS"] {
-        assert_eq!(
-            past.parse::<Time>().map_err(|e| e.kind),
-            Err(LiteralErrorKind::OutOfRange),
-            "TIME-RANGE-01: {past} is one past an end"
+    crate::cover::check_ids(&["TIME-RANGE-01"], || {
+        check_eq!(
+            "T#-24D_20H_31M_23S_648MS"
+                .parse::<Time>()
+                .map(Time::as_millis),
+            Ok(i32::MIN),
+            "TIME-RANGE-01: the lower end"
         );
-    }
-    for ms in [
-        i64::from(i32::MIN) - 1,
-        i64::from(i32::MIN),
-        -1,
-        0,
-        i64::from(i32::MAX),
-        i64::from(i32::MAX) + 1,
-    ] {
-        prop_time_range(ms);
-    }
+        check_eq!(
+            "T#24D_20H_31M_23S_647MS"
+                .parse::<Time>()
+                .map(Time::as_millis),
+            Ok(i32::MAX),
+            "TIME-RANGE-01: the upper end"
+        );
+        for past in ["T#-24D_20H_31M_23S_649MS", "T#24D_20H_31M_23S_648MS"] {
+            check_eq!(
+                past.parse::<Time>().map_err(|e| e.kind),
+                Err(LiteralErrorKind::OutOfRange),
+                "TIME-RANGE-01: {past} is one past an end"
+            );
+        }
+        for ms in [
+            i64::from(i32::MIN) - 1,
+            i64::from(i32::MIN),
+            -1,
+            0,
+            i64::from(i32::MAX),
+            i64::from(i32::MAX) + 1,
+        ] {
+            prop_time_range(ms);
+        }
+    });
 }
 
 /// The bolero harnesses of the time formats: random under `cargo test`, every value under
-/// Kani. No loops but the BCD digit loop (3 digits) and the base loop (4 bases) of
-/// `from_millis`: `#[kani::unwind(5)]`.
+/// Kani. Symbolic: the 16-bit word. No loops but the BCD digit loop (3 digits) and the base
+/// loop (4 bases) of `from_millis`: `#[kani::unwind(5)]` (4 iterations and the exit).
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_word_decode() {
@@ -509,7 +626,8 @@ fn kani_word_decode() {
 }
 
 /// S5T-AUTO-BASE-01 and S5T-RANGE-01 for every duration (`from_millis` divides by the four
-/// constant bases only): `#[kani::unwind(5)]` for its loop over the 4 bases.
+/// constant bases only). Symbolic: the duration (`u32` ms) and an S5TIME (any valid one).
+/// `#[kani::unwind(5)]`: `from_millis`'s loop over the 4 bases and its exit.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_from_millis() {
@@ -522,7 +640,7 @@ fn kani_from_millis() {
         });
 }
 
-/// TIME-ARITH-01 and TIME-RANGE-01 for every pair (no loop).
+/// TIME-ARITH-01 and TIME-RANGE-01 for every pair. Symbolic: two `i32` durations. No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_time_arith() {
@@ -542,15 +660,16 @@ pub fn prop_parse_bytes(bytes: &[u8]) {
     if let Ok(text) = core::str::from_utf8(bytes) {
         prop_s5_parse_total(text);
         if let Ok(pv) = plc_timers::counter::s5::CounterPreset::parse(text) {
-            assert!(pv.value() <= 999, "SC-BCD-01: {text}: a preset above 999");
+            check!(pv.value() <= 999, "SC-BCD-01: {text}: a preset above 999");
         }
     }
 }
 
 /// The parsers over literals of 12 bytes, every byte any of [`LITERAL_BYTES`] under `cargo
-/// test` and any byte under Kani: `#[kani::unwind(14)]` covers the parsers' per-byte loops
-/// (at most 12 iterations each, nested loops advancing the same index) and their exits, and
-/// `from_utf8`'s loop over 12 bytes.
+/// test` and any byte under Kani. Symbolic: 12 bytes and the length (0..=12).
+/// `#[kani::unwind(14)]`: the parsers' per-byte loops (at most 12 iterations each, nested loops
+/// advancing the same index, and the exit: 13) and `from_utf8`'s loop over 12 bytes; 14 leaves
+/// one for the prefix comparison's loop over the longest prefix, `S5TIME#` (7 bytes).
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(14))]
 fn kani_parse_12_bytes() {
@@ -581,7 +700,7 @@ fn exhaustive_s5_literal_grammar_12_bytes() {
         if let Ok(t) = text.parse::<S5Time>() {
             accepted += 1;
             let total = components_total(&text[4..]).expect("accepted literals are well-formed");
-            assert_eq!(
+            check_eq!(
                 Ok(t),
                 S5Time::from_millis(total),
                 "S5T-LIT-01: {text} is the automatic encoding of its components"
@@ -595,7 +714,7 @@ fn exhaustive_s5_literal_grammar_12_bytes() {
             }
         }
     }
-    assert!(
+    check!(
         n > 1_000_000 && accepted > 1_000,
         "{n} literals, {accepted} accepted"
     );

@@ -263,9 +263,11 @@ fn asserts_id(text: &str, id: &str) -> bool {
                     .nth(600)
                     .map_or(0, |(i, _)| i);
                 let before = &text[from..at];
-                before
-                    .rfind("assert")
-                    .is_some_and(|m| !before[m..].contains(";\n"))
+                ["assert", "check"].iter().any(|name| {
+                    before
+                        .rfind(name)
+                        .is_some_and(|m| !before[m..].contains(";\n"))
+                })
             })
         })
 }
@@ -288,9 +290,75 @@ fn missing_assertions(catalogs: &[(String, String, Catalog)]) -> Vec<String> {
         .collect()
 }
 
+/// The requirement IDs named by the `check_ids(&[…])`, `check_only(&[…])` and
+/// `require_checked(&[…], …)` calls in proofs/,
+/// each inside a `#[test]` driver (`cargo test` runs it), and the errors found: a call outside a
+/// test. At run time such a driver fails unless an assertion of each ID it names was reached
+/// (`check!`/`check_eq!`, proofs/cover.rs), so an ID in this set was checked with its premise
+/// true on every `cargo test`.
+fn driver_checked_ids() -> (BTreeSet<String>, Vec<String>) {
+    let mut ids = BTreeSet::new();
+    let mut errors = Vec::new();
+    for (path, text) in sources("proofs") {
+        for call in ["check_ids(", "check_only(", "require_checked("] {
+            for (at, _) in text.match_indices(call) {
+                // A call with a literal list (not the definition in proofs/cover.rs).
+                let Some(list) = text[at + call.len()..].trim_start().strip_prefix("&[") else {
+                    continue;
+                };
+                let Some(end) = list.find(']') else {
+                    errors.push(format!("{path}: unterminated {call}"));
+                    continue;
+                };
+                let driver = text[..at]
+                    .rfind("\nfn ")
+                    .map(|f| &text[f + 4..])
+                    .and_then(|rest| rest.split('(').next())
+                    .unwrap_or("");
+                if driver.is_empty() {
+                    errors.push(format!("{path}: a `{call}` outside a function"));
+                    continue;
+                }
+                if let Err(e) = exists(&format!("{path}::{driver}"), true) {
+                    errors.push(format!(
+                        "{path}: `{call}` in {driver}, which is not a test: {e}"
+                    ));
+                    continue;
+                }
+                ids.extend(
+                    list[..end]
+                        .split(',')
+                        .map(|s| s.trim().trim_matches('"'))
+                        .filter(|s| !s.is_empty())
+                        .map(String::from),
+                );
+            }
+        }
+    }
+    (ids, errors)
+}
+
+/// Every behavioural requirement is checked by a driver that `cargo test` runs: it is named by
+/// a `check_ids`/`check_only` call of a `#[test]` driver in proofs/, which fails unless one of
+/// the requirement's assertions ran with its premise true. (And it has a property of its own:
+/// an assertion in proofs/ whose message starts with its ID.)
 #[test]
-fn every_behavioural_requirement_leads_an_assertion_in_proofs() {
+fn every_behavioural_requirement_is_checked_by_a_driver() {
     let catalogs = load_all();
+    let (checked_ids, errors) = driver_checked_ids();
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    let unchecked: Vec<String> = catalogs
+        .iter()
+        .flat_map(|(family, _, c)| c.requirement.iter().map(move |r| (family, r)))
+        .filter(|(family, r)| behavioural(family, &r.id) && !checked_ids.contains(&r.id))
+        .map(|(family, r)| {
+            format!(
+                "{family}: {}: no driver in proofs/ names it in check_ids or check_only",
+                r.id
+            )
+        })
+        .collect();
+    assert!(unchecked.is_empty(), "{}", unchecked.join("\n"));
     let missing = missing_assertions(&catalogs);
     assert!(missing.is_empty(), "{}", missing.join("\n"));
     let checked = catalogs
