@@ -15,6 +15,7 @@
 mod cover;
 
 mod counter;
+mod explain;
 mod iec;
 mod s5;
 mod time;

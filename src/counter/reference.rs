@@ -90,10 +90,8 @@ impl<T: CounterInt> CounterRef<T> {
     ) -> CounterOutput<T> {
         let (all, q) = masks(kind);
         let masked = input.with_signals(kind.mask(input.signals()));
-        if masked.signals() != input.signals() {
-            // An input the instruction lacks was 1 and is taken as 0.
-            rec.add(RuleSet::of(Rule::CNT_INPUTS_01), all);
-        }
+        // An input the instruction lacks was 1 and is taken as 0.
+        let lacking = masked.signals() != input.signals();
         let input = masked;
         let (up, down) = self.edges(&input, rec);
         let cv = self.state.cv;
@@ -121,6 +119,7 @@ impl<T: CounterInt> CounterRef<T> {
             }
             counted
         };
+        rec.add(RuleSet::EMPTY.with_if(lacking, Rule::CNT_INPUTS_01), all);
         rec.add(RuleSet::of(Rule::CNT_Q_01), q);
         outputs(self.state.cv, input.pv)
     }

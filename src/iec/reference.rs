@@ -92,9 +92,11 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// IEC-START-01: on the starting edge the CPU clock is copied into START and the preset is
     /// latched; it stays in force while the timer runs (IEC-PT-LATCH-01).
-    fn start(&mut self, now: C, pt: Time, kind: IecKind, rec: &mut impl Recorder) {
+    ///
+    /// `also`: further rules that made this start (TP-RETRIGGER-01).
+    fn start(&mut self, now: C, pt: Time, kind: IecKind, also: RuleSet, rec: &mut impl Recorder) {
         rec.write(
-            RuleSet::of(kind_rule(kind))
+            also.with(kind_rule(kind))
                 .with(Rule::IEC_START_01)
                 .with(Rule::IEC_PT_LATCH_01)
                 .with(Rule::IEC_EDGE_01),
@@ -176,12 +178,8 @@ impl<C: ClockWord> IecTimerRef<C> {
         let rising = input.input && !self.state.input;
         if rising && !self.state.running {
             // TP-RETRIGGER-01: the pulse ended in this very call's update.
-            let retrigger = was_running;
-            self.start(now, input.pt, IecKind::Tp, rec);
-            rec.add(
-                RuleSet::EMPTY.with_if(retrigger, Rule::TP_RETRIGGER_01),
-                Q | ET,
-            );
+            let retrigger = RuleSet::EMPTY.with_if(was_running, Rule::TP_RETRIGGER_01);
+            self.start(now, input.pt, IecKind::Tp, retrigger, rec);
             self.update(now, IecKind::Tp, pt, rec);
         }
         if !self.state.running && !input.input {
@@ -200,7 +198,7 @@ impl<C: ClockWord> IecTimerRef<C> {
             rec.write(RuleSet::of(Rule::TON_IN_01), Q | ET);
             self.reset_and_stop();
         } else if !self.state.input {
-            self.start(now, input.pt, IecKind::Ton, rec);
+            self.start(now, input.pt, IecKind::Ton, RuleSet::EMPTY, rec);
             self.update(now, IecKind::Ton, pt, rec);
         } else {
             self.update(now, IecKind::Ton, pt, rec);
@@ -216,7 +214,7 @@ impl<C: ClockWord> IecTimerRef<C> {
             self.reset_and_stop();
             self.state.q = true;
         } else if self.state.input {
-            self.start(now, input.pt, IecKind::Tof, rec);
+            self.start(now, input.pt, IecKind::Tof, RuleSet::EMPTY, rec);
             self.update(now, IecKind::Tof, pt, rec);
         } else {
             self.update(now, IecKind::Tof, pt, rec);
@@ -239,7 +237,7 @@ impl<C: ClockWord> IecTimerRef<C> {
                 // Resume: START shifted back by the accumulated time, so that an update's
                 // `now - START` is the accumulated total.
                 let accumulated = self.state.et;
-                self.start(now, input.pt, IecKind::Tonr, rec);
+                self.start(now, input.pt, IecKind::Tonr, RuleSet::EMPTY, rec);
                 self.state.start = now.elapsed_since(accumulated);
             }
             self.update(now, IecKind::Tonr, pt, rec);

@@ -156,10 +156,8 @@ impl S5CounterRef {
         let up = kind.counts_up() && input.cu && !s.cu_prev;
         let down = kind.counts_down() && input.cd && !s.cd_prev;
         let set = input.s && !s.s_prev;
-        if (!kind.counts_up() && input.cu) || (!kind.counts_down() && input.cd) {
-            // The box lacks that input: its operation does not run.
-            rec.add(RuleSet::of(Rule::SC_INPUTS_01), ALL);
-        }
+        // The box lacks an input that is 1: its operation does not run.
+        let lacking = (!kind.counts_up() && input.cu) || (!kind.counts_down() && input.cd);
         if kind.counts_up() {
             self.count_up_rec(input.cu, rec);
         }
@@ -175,6 +173,11 @@ impl S5CounterRef {
             rec.add(RuleSet::of(Rule::SC_PRIO_01), ALL);
         }
         self.reset_rec(input.r, rec);
+        // (Under R, R alone decides: the missing operation would have changed nothing.)
+        rec.add(
+            RuleSet::EMPTY.with_if(lacking && !input.r, Rule::SC_INPUTS_01),
+            ALL,
+        );
         rec.add(RuleSet::of(Rule::SC_Q_01), Q);
         self.state.output()
     }
