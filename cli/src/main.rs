@@ -13,7 +13,8 @@ use plc_timers::time::{S5Time, Time};
 use plc_timers_cli::trace::diagram::{self, Window};
 use plc_timers_cli::trace::family::block_names;
 use plc_timers_cli::trace::{
-    check, run, vcd, vectors, BlockSpec, Error, Implementation, IntType, Location, TraceError,
+    check, run, run_explained, vcd, vectors, BlockSpec, Error, Implementation, IntType, Location,
+    TraceError,
 };
 
 /// Exit status: the check found a difference.
@@ -32,7 +33,13 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Run a CSV trace through a block; write the trace with the block's outputs appended.
-    Run(BlockArgs),
+    Run {
+        #[command(flatten)]
+        block: BlockArgs,
+        /// Add a column `rules`: the IDs of the requirements that decided each row's outputs.
+        #[arg(long)]
+        explain: bool,
+    },
     /// Compare a trace that carries outputs (another implementation's) with the reference;
     /// exit status 1 at the first difference, with the rule that decides it.
     Check {
@@ -297,10 +304,17 @@ fn main() -> ExitCode {
                 .map(|()| ExitCode::SUCCESS),
             Err(e) => return fail(e),
         },
-        Command::Run(args) => (|| {
+        Command::Run {
+            block: args,
+            explain,
+        } => (|| {
             let spec = args.spec()?;
             let input = args.input()?;
-            run(spec, &args.presets(), input, raw_stdout())?;
+            if explain {
+                run_explained(spec, &args.presets(), input, raw_stdout())?;
+            } else {
+                run(spec, &args.presets(), input, raw_stdout())?;
+            }
             Ok(ExitCode::SUCCESS)
         })(),
         Command::Check {

@@ -4,14 +4,13 @@
 //! [`dispatch`] picks the family, the implementation and (IEC counters) the integer type from a
 //! [`BlockSpec`]; everything else is generic over [`Family`].
 //!
-//! Each family also classifies a step for `check` ([`Family::explain`]): from the block's state
-//! before and after the step it names the requirement that decides an output there. The
-//! semantics stay in the core: the classifier only reads the states the core reports.
+//! The rules that decided a step come from the core's references ([`Family::call_explained`],
+//! through [`Explains`]): the tool has no copy of the semantics.
 
 use std::fmt;
 use std::marker::PhantomData;
 
-use plc_timers::catalog::{Block, Kind, ValueKind};
+use plc_timers::catalog::{Block, Kind};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
     S5CounterRef, S5CounterState,
@@ -21,9 +20,8 @@ use plc_timers::counter::{
     CounterState,
 };
 use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{
-    ticks_between, S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef,
-};
+use plc_timers::rule::{Explained, RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
+use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 
 use super::error::{Location, TraceError};
@@ -109,6 +107,58 @@ impl Pin {
 /// The [`Signals`] bit of `block`'s input `name`; 0 when the block has no such input.
 pub fn input_bit(block: Block, name: &str) -> u32 {
     block.input_index(name).map_or(0, |i| 1 << i)
+}
+
+/// An implementation's explained call: the references give their rules
+/// (`call_explained`), the optimized forms none (they are proven equal to the reference, which
+/// is the one that explains).
+pub trait Explains<K, I, O> {
+    /// Whether [`Explains::explained`] gives the reference's rules.
+    const EXPLAINS: bool;
+    /// One call with the rules that decided it.
+    fn explained(&mut self, kind: K, now: CpuTime, input: I) -> Explained<O>;
+}
+
+/// A call's outputs without rules (the optimized forms).
+fn unexplained<O>(output: O) -> Explained<O> {
+    Explained {
+        output,
+        outputs: [RuleSet::EMPTY; RULE_OUTPUTS],
+        state: RuleSet::EMPTY,
+    }
+}
+
+/// Implements [`Explains`] for a reference (`$explains` true, through `call_explained`) or an
+/// optimized form (false, through `call`).
+macro_rules! explains {
+    ($([$($g:tt)*] $t:ty: $k:ty, $i:ty, $o:ty, $explains:literal, |$x:ident, $kind:ident, $now:ident, $input:ident| $body:expr;)*) => {
+        $(impl<$($g)*> Explains<$k, $i, $o> for $t {
+            const EXPLAINS: bool = $explains;
+            fn explained(&mut self, $kind: $k, $now: CpuTime, $input: $i) -> Explained<$o> {
+                let $x = self;
+                $body
+            }
+        })*
+    };
+}
+
+explains! {
+    [] S5TimerRef: S5Kind, S5Input, S5Output, true,
+        |t, kind, now, input| t.call_explained(kind, now, input);
+    [] S5Timer: S5Kind, S5Input, S5Output, false,
+        |t, kind, now, input| unexplained(t.call(kind, now, input));
+    [] IecTimerRef<u32>: IecKind, IecInput, IecOutput<u32>, true,
+        |t, kind, now, input| t.call_explained(kind, now, input);
+    [] IecTimer: IecKind, IecInput, IecOutput<u32>, false,
+        |t, kind, now, input| unexplained(t.call(kind, now, input));
+    [N: CounterInt] CounterRef<N>: CounterKind, CounterInput<N>, CounterOutput<N>, true,
+        |t, kind, _now, input| t.call_explained(kind, input);
+    [N: CounterInt] Counter<N>: CounterKind, CounterInput<N>, CounterOutput<N>, false,
+        |t, kind, _now, input| unexplained(t.call(kind, input));
+    [] S5CounterRef: S5CounterKind, S5CounterInput, S5CounterOutput, true,
+        |t, kind, _now, input| t.call_explained(kind, input);
+    [] S5Counter: S5CounterKind, S5CounterInput, S5CounterOutput, false,
+        |t, kind, _now, input| unexplained(t.call(kind, input));
 }
 
 /// Which implementation of a block to drive.
@@ -279,41 +329,6 @@ pub fn block_names() -> String {
     names.join(", ")
 }
 
-/// Why an output has its value at a step: the requirements that decide it and what happened.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Why {
-    /// Requirement IDs (`spec/requirements/*.toml`), the deciding one first.
-    pub rules: Vec<&'static str>,
-    /// What happened at the step, in a few words.
-    pub what: String,
-}
-
-fn why(rules: &[&'static str], what: impl Into<String>) -> Why {
-    Why {
-        rules: rules.to_vec(),
-        what: what.into(),
-    }
-}
-
-/// One executed step, as [`Family::explain`] sees it.
-#[derive(Clone, Copy, Debug)]
-pub struct Step<P, S> {
-    /// The CPU time of the step (ms).
-    pub now: u64,
-    /// The CPU time of the previous step (0 before the first).
-    pub last: u64,
-    /// The boolean inputs.
-    pub signals: Signals,
-    /// The preset.
-    pub preset: P,
-    /// The state before the step.
-    pub before: S,
-    /// The state after the step.
-    pub after: S,
-    /// The catalog index of the output to explain.
-    pub output: usize,
-}
-
 /// A block family driven through its core interface.
 pub trait Family {
     /// The preset's type (TV, PT, PV).
@@ -338,8 +353,17 @@ pub trait Family {
     /// Milliseconds per unit of the integer output while it runs (ET: 1, BI: the time base),
     /// `None` when it does not change with time (CV).
     fn ramp(&self, output: &Self::Output) -> Option<u64>;
-    /// The requirement that decides output `step.output` at this step.
-    fn explain(&self, step: &Step<Self::Preset, Self::State>) -> Why;
+    /// [`Family::call`], explained by the reference ([`Explained`]: the rules that decided
+    /// each output and acted on the state); the optimized forms give no rules.
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        preset: Self::Preset,
+    ) -> Explained<Self::Output>;
+    /// Whether [`Family::call_explained`] gives the reference's rules (the optimized forms
+    /// give none).
+    fn explains(&self) -> bool;
     /// The catalog inputs the adapter reads, as [`Signals`] bits.
     fn reads(&self) -> Signals;
 }
@@ -387,14 +411,6 @@ fn counter<N: CounterInt, V: Visit>(
     }
 }
 
-/// Whether output `index` of `block` is a boolean.
-fn is_bool(block: Block, index: usize) -> bool {
-    block
-        .outputs()
-        .get(index)
-        .is_some_and(|p| p.kind == ValueKind::Bool)
-}
-
 // ---------------------------------------------------------------------------------------------
 // S5 timers
 
@@ -409,6 +425,10 @@ pub struct S5Adapter<T> {
 }
 
 impl<T: S5TimerOps> S5Adapter<T> {
+    fn input(&self, signals: Signals, tv: S5Time) -> S5Input {
+        S5Input::new(signals.get(self.s), signals.get(self.r), tv).with_fr(signals.get(self.fr))
+    }
+
     fn new(block: Block, kind: S5Kind, timer: T) -> S5Adapter<T> {
         S5Adapter {
             timer,
@@ -421,18 +441,7 @@ impl<T: S5TimerOps> S5Adapter<T> {
     }
 }
 
-/// The rule of each S5 timer kind's start and status.
-fn s5_kind_rule(kind: S5Kind) -> &'static str {
-    match kind {
-        S5Kind::SPulse => "SP-Q-01",
-        S5Kind::SPext => "SE-RUN-ON-01",
-        S5Kind::SOdt => "SD-Q-01",
-        S5Kind::SOdts => "SS-Q-01",
-        S5Kind::SOffdt => "SF-Q-01",
-    }
-}
-
-impl<T: S5TimerOps> Family for S5Adapter<T> {
+impl<T: S5TimerOps + Explains<S5Kind, S5Input, S5Output>> Family for S5Adapter<T> {
     type Preset = S5Time;
     type State = S5State;
     type Output = S5Output;
@@ -451,9 +460,18 @@ impl<T: S5TimerOps> Family for S5Adapter<T> {
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, tv: S5Time) -> S5Output {
-        let input = S5Input::new(signals.get(self.s), signals.get(self.r), tv)
-            .with_fr(signals.get(self.fr));
+        let input = self.input(signals, tv);
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, tv: S5Time) -> Explained<S5Output> {
+        let input = self.input(signals, tv);
+        self.timer
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        T::EXPLAINS
     }
 
     fn state(&self) -> S5State {
@@ -478,113 +496,6 @@ impl<T: S5TimerOps> Family for S5Adapter<T> {
     fn reads(&self) -> Signals {
         Signals(self.s.0 | self.r.0 | self.fr.0)
     }
-
-    fn explain(&self, st: &Step<S5Time, S5State>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let (s, r, fr) = (
-            st.signals.get(self.s),
-            st.signals.get(self.r),
-            st.signals.get(self.fr),
-        );
-        let kind = self.kind;
-        let kind_rule = s5_kind_rule(kind);
-        let fr_edge = fr && !b.fr_prev;
-        let s_memory = b.s_prev && !fr_edge;
-        let rising = s && !s_memory;
-        let falling = !s && s_memory;
-        let ticks = ticks_between(
-            CpuTime::from_millis(st.last),
-            CpuTime::from_millis(st.now),
-            b.base,
-        );
-        let zero = b.running && b.value == 0;
-        let ran_out = b.running && (zero || ticks >= u64::from(b.value));
-        let start = if kind.starts_on_falling_edge() {
-            falling
-        } else {
-            rising
-        };
-        let status = is_bool(self.block, st.output);
-        let mut w = if r {
-            why(
-                &["S5TMR-R-01"],
-                "R = 1: the timer is reset (stopped, BI = 0, Q = 0)",
-            )
-        } else if start && fr_edge && b.s_prev {
-            why(
-                &["S5TMR-FR-01", kind_rule],
-                format!(
-                    "FR rises with S = {}: the timer restarts with TV = {}",
-                    u8::from(s),
-                    st.preset
-                ),
-            )
-        } else if start {
-            why(
-                &[kind_rule, "S5TMR-EDGE-01"],
-                format!(
-                    "S {}: {} starts with TV = {} ({} units of {} ms)",
-                    if s { "rises" } else { "falls" },
-                    kind.name(),
-                    st.preset,
-                    st.preset.units(),
-                    st.preset.base().millis()
-                ),
-            )
-        } else if ran_out {
-            let q = u8::from(a.q);
-            if zero {
-                why(
-                    &["S5TMR-ZERO-01"],
-                    format!("the timer started with value 0 is found run out: Q = {q}"),
-                )
-            } else {
-                why(
-                    &["S5TMR-EXPIRE-01", "S5TMR-TICK-01"],
-                    format!(
-                        "{ticks} tick(s) of the {} ms base since {} ms: the time runs out, Q = {q}",
-                        b.base.millis(),
-                        st.last
-                    ),
-                )
-            }
-        } else if kind == S5Kind::SOffdt && rising {
-            why(&["SF-Q-01"], "S rises: Q = 1 and a running time stops")
-        } else if matches!(kind, S5Kind::SPulse | S5Kind::SOdt) && !s && (b.running || b.q) {
-            why(
-                &["S5TMR-STOP-01", kind_rule],
-                "S = 0 stops the timer: Q = 0, the remaining value is kept",
-            )
-        } else if b.running && ticks > 0 && !status {
-            why(
-                &["S5TMR-TICK-01"],
-                format!(
-                    "{ticks} tick(s) of the {} ms base since {} ms: BI {} -> {}",
-                    b.base.millis(),
-                    st.last,
-                    b.value,
-                    a.value
-                ),
-            )
-        } else if s && s_memory && !b.running {
-            why(
-                &["S5TMR-EDGE-01", kind_rule],
-                "S held at 1: no edge, so nothing starts",
-            )
-        } else {
-            why(
-                &[kind_rule],
-                format!(
-                    "no start, tick or reset at this call ({}running)",
-                    if a.running { "" } else { "not " }
-                ),
-            )
-        };
-        if self.block.outputs()[st.output].kind == ValueKind::Word {
-            w.rules.push("S5TMR-RANGE-01");
-        }
-        w
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -600,6 +511,10 @@ pub struct IecAdapter<T> {
 }
 
 impl<T: IecTimerOps<u32>> IecAdapter<T> {
+    fn input(&self, signals: Signals, pt: Time) -> IecInput {
+        IecInput::new(signals.get(self.input), pt).with_reset(signals.get(self.reset))
+    }
+
     fn new(block: Block, kind: IecKind, timer: T) -> IecAdapter<T> {
         IecAdapter {
             timer,
@@ -611,16 +526,7 @@ impl<T: IecTimerOps<u32>> IecAdapter<T> {
     }
 }
 
-fn iec_kind_rule(kind: IecKind) -> &'static str {
-    match kind {
-        IecKind::Tp => "TP-IN-01",
-        IecKind::Ton => "TON-IN-01",
-        IecKind::Tof => "TOF-IN-01",
-        IecKind::Tonr => "TONR-IN-01",
-    }
-}
-
-impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
+impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Family for IecAdapter<T> {
     type Preset = Time;
     type State = IecState<u32>;
     type Output = IecOutput<u32>;
@@ -639,8 +545,23 @@ impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, pt: Time) -> IecOutput<u32> {
-        let input = IecInput::new(signals.get(self.input), pt).with_reset(signals.get(self.reset));
+        let input = self.input(signals, pt);
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        pt: Time,
+    ) -> Explained<IecOutput<u32>> {
+        let input = self.input(signals, pt);
+        self.timer
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        T::EXPLAINS
     }
 
     fn state(&self) -> IecState<u32> {
@@ -658,123 +579,6 @@ impl<T: IecTimerOps<u32>> Family for IecAdapter<T> {
 
     fn reads(&self) -> Signals {
         Signals(self.input.0 | self.reset.0)
-    }
-
-    fn explain(&self, st: &Step<Time, IecState<u32>>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let kind = self.kind;
-        let input = st.signals.get(self.input);
-        let reset = st.signals.get(self.reset);
-        let pt = st.preset.clamp_negative();
-        let gap = st.now.saturating_sub(st.last);
-        let rising = input && !b.input;
-        let started = match kind {
-            IecKind::Tp => rising && !(b.running && a.running && a.start == b.start),
-            IecKind::Ton => rising,
-            IecKind::Tof => !input && b.input,
-            IecKind::Tonr => input && !b.running && !b.q,
-        };
-        let kind_rule = iec_kind_rule(kind);
-        let latched = b.running && !started && pt != b.pt;
-        let status = is_bool(self.block, st.output);
-        if kind == IecKind::Tonr && reset {
-            return why(&["TONR-R-01"], "R = 1 resets ET and Q and stops the timer");
-        }
-        if latched {
-            return why(
-                &["IEC-PT-LATCH-01"],
-                format!(
-                    "PT is now {pt} ms, but the running timer keeps the PT latched at its start ({} ms)",
-                    b.pt
-                ),
-            );
-        }
-        if gap >= 1 << 31 && (b.running || a.running) && !started {
-            return why(
-                &["IEC-WRAP-01"],
-                format!(
-                    "{gap} ms since the last call: elapsed = now - START modulo 2^32 = {} ms",
-                    (st.now as u32).wrapping_sub(b.start)
-                ),
-            );
-        }
-        if started && pt == 0 {
-            return why(
-                &["IEC-PT0-01", kind_rule],
-                "PT = 0: the starting call itself finds ET >= PT",
-            );
-        }
-        if kind == IecKind::Tp && started && b.running {
-            return why(
-                &["TP-RETRIGGER-01"],
-                "the pulse runs out in this call and the rising IN starts a new one",
-            );
-        }
-        if started {
-            let rule = if kind == IecKind::Tonr {
-                "TONR-RESUME-01"
-            } else {
-                "IEC-START-01"
-            };
-            return why(
-                &[rule, kind_rule],
-                format!(
-                    "IN {}: the timer starts, START = {} ms, PT = {pt} ms latched",
-                    if input { "rises" } else { "falls" },
-                    a.start
-                ),
-            );
-        }
-        if b.running && !a.running && a.et == a.pt && input == b.input {
-            return why(
-                &["IEC-EXPIRY-01"],
-                format!(
-                    "ET reaches PT = {} ms in this call: ET stays at PT, Q = {}",
-                    a.pt,
-                    u8::from(a.q)
-                ),
-            );
-        }
-        if kind == IecKind::Tp && rising {
-            return why(
-                &["TP-IN-01"],
-                "a rising IN while the pulse runs has no effect",
-            );
-        }
-        if a.running {
-            let what = if status {
-                format!(
-                    "ET = {} ms < PT = {} ms: Q keeps its value while running",
-                    a.et, a.pt
-                )
-            } else {
-                format!("running: ET = now - START = {} ms", a.et)
-            };
-            let rule = if status {
-                "IEC-EXPIRY-01"
-            } else {
-                "IEC-START-01"
-            };
-            return why(&[rule], what);
-        }
-        if a.q != b.q || a.et != b.et {
-            return why(
-                &[kind_rule],
-                format!(
-                    "IN = {}: Q = {}, ET = {} ms",
-                    u8::from(input),
-                    u8::from(a.q),
-                    a.et
-                ),
-            );
-        }
-        why(
-            &[kind_rule, "IEC-EDGE-01"],
-            format!(
-                "IN = {}, no starting edge: Q and ET unchanged",
-                u8::from(input)
-            ),
-        )
     }
 }
 
@@ -794,6 +598,16 @@ pub struct CounterAdapter<N, C> {
 }
 
 impl<N: CounterInt, C: CounterOps<N>> CounterAdapter<N, C> {
+    fn input(&self, signals: Signals, pv: N) -> CounterInput<N> {
+        CounterInput {
+            cu: signals.get(self.cu),
+            cd: signals.get(self.cd),
+            r: signals.get(self.r),
+            ld: signals.get(self.ld),
+            pv,
+        }
+    }
+
     fn new(block: Block, kind: CounterKind, counter: C) -> CounterAdapter<N, C> {
         CounterAdapter {
             counter,
@@ -808,7 +622,11 @@ impl<N: CounterInt, C: CounterOps<N>> CounterAdapter<N, C> {
     }
 }
 
-impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
+impl<
+        N: CounterInt,
+        C: CounterOps<N> + Explains<CounterKind, CounterInput<N>, CounterOutput<N>>,
+    > Family for CounterAdapter<N, C>
+{
     type Preset = N;
     type State = CounterState<N>;
     type Output = CounterOutput<N>;
@@ -836,14 +654,18 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: N) -> CounterOutput<N> {
-        let input = CounterInput {
-            cu: signals.get(self.cu),
-            cd: signals.get(self.cd),
-            r: signals.get(self.r),
-            ld: signals.get(self.ld),
-            pv,
-        };
+        let input = self.input(signals, pv);
         self.counter.call(self.kind, input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, pv: N) -> Explained<CounterOutput<N>> {
+        let input = self.input(signals, pv);
+        self.counter
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        C::EXPLAINS
     }
 
     fn state(&self) -> CounterState<N> {
@@ -867,59 +689,6 @@ impl<N: CounterInt, C: CounterOps<N>> Family for CounterAdapter<N, C> {
     fn reads(&self) -> Signals {
         Signals(self.cu.0 | self.cd.0 | self.r.0 | self.ld.0)
     }
-
-    fn explain(&self, st: &Step<N, CounterState<N>>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let g = |pin| st.signals.get(pin);
-        let (cu, cd, r, ld) = (g(self.cu), g(self.cd), g(self.r), g(self.ld));
-        let up = cu && !b.cu_prev;
-        let down = cd && !b.cd_prev;
-        let (bcv, acv, pv) = (b.cv.to_i128(), a.cv.to_i128(), st.preset.to_i128());
-        let cv = if r {
-            why(
-                &["CNT-PRIO-01"],
-                "R = 1: CV = 0 (R before LD before counting)",
-            )
-        } else if ld {
-            why(&["CNT-PRIO-01"], format!("LD = 1: CV = PV = {pv}"))
-        } else if up && down {
-            why(&["CNT-SIMUL-01"], "CU and CD rise together: CV unchanged")
-        } else if (up || down) && acv == bcv {
-            why(
-                &["CNT-SAT-01", "CNT-EDGE-01"],
-                format!("CV stays at the {} limit {bcv}", N::NAME),
-            )
-        } else if up || down {
-            why(
-                &["CNT-EDGE-01"],
-                format!("{} rises: CV {bcv} -> {acv}", if up { "CU" } else { "CD" }),
-            )
-        } else {
-            why(
-                &["CNT-EDGE-01"],
-                "no rising CU or CD (a level held at 1 does not count): CV unchanged",
-            )
-        };
-        if !is_bool(self.block, st.output) {
-            return cv;
-        }
-        let qd =
-            self.kind == CounterKind::Ctd || (self.kind == CounterKind::Ctud && st.output == 1);
-        let what = if qd {
-            format!("QD = CV <= 0 with CV = {acv}")
-        } else {
-            format!("QU = CV >= PV with CV = {acv}, PV = {pv}")
-        };
-        let mut rules = vec!["CNT-Q-01"];
-        if acv != bcv {
-            rules.extend(cv.rules);
-            return Why {
-                rules,
-                what: format!("{what}; {}", cv.what),
-            };
-        }
-        Why { rules, what }
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -938,6 +707,18 @@ pub struct S5CounterAdapter<C> {
 }
 
 impl<C: S5CounterOps> S5CounterAdapter<C> {
+    fn input(&self, signals: Signals, pv: CounterPreset) -> S5CounterInput {
+        let g = |pin| signals.get(pin);
+        S5CounterInput {
+            cu: g(self.cu),
+            cd: g(self.cd),
+            s: g(self.s),
+            r: g(self.r),
+            fr: g(self.fr),
+            pv,
+        }
+    }
+
     fn new(block: Block, kind: S5CounterKind, counter: C) -> S5CounterAdapter<C> {
         S5CounterAdapter {
             counter,
@@ -952,7 +733,9 @@ impl<C: S5CounterOps> S5CounterAdapter<C> {
     }
 }
 
-impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
+impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>> Family
+    for S5CounterAdapter<C>
+{
     type Preset = CounterPreset;
     type State = S5CounterState;
     type Output = S5CounterOutput;
@@ -971,16 +754,23 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: CounterPreset) -> S5CounterOutput {
-        let g = |pin| signals.get(pin);
-        let input = S5CounterInput {
-            cu: g(self.cu),
-            cd: g(self.cd),
-            s: g(self.s),
-            r: g(self.r),
-            fr: g(self.fr),
-            pv,
-        };
+        let input = self.input(signals, pv);
         self.counter.call(self.kind, input)
+    }
+
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        pv: CounterPreset,
+    ) -> Explained<S5CounterOutput> {
+        let input = self.input(signals, pv);
+        self.counter
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        C::EXPLAINS
     }
 
     fn state(&self) -> S5CounterState {
@@ -1003,87 +793,12 @@ impl<C: S5CounterOps> Family for S5CounterAdapter<C> {
     fn reads(&self) -> Signals {
         Signals(self.cu.0 | self.cd.0 | self.s.0 | self.r.0 | self.fr.0)
     }
-
-    fn explain(&self, st: &Step<CounterPreset, S5CounterState>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let g = |pin| st.signals.get(pin);
-        let (cu, cd, s, r, fr) = (g(self.cu), g(self.cd), g(self.s), g(self.r), g(self.fr));
-        let fr_edge = fr && !b.fr_prev;
-        // An FR edge clears the edge memories before the operations see them.
-        let memory = |m: bool| m && !fr_edge;
-        let up = self.kind.counts_up() && cu && !memory(b.cu_prev);
-        let down = self.kind.counts_down() && cd && !memory(b.cd_prev);
-        let set = s && !memory(b.s_prev);
-        let by_fr = fr_edge && ((up && b.cu_prev) || (down && b.cd_prev) || (set && b.s_prev));
-        let cv = if r {
-            why(
-                &["SC-PRIO-01"],
-                "R = 1: CV = 0 (R last in FR, CU, CD, S, R)",
-            )
-        } else if set {
-            let mut rules = vec!["SC-SET-01"];
-            if by_fr {
-                rules.push("SC-FR-01");
-            }
-            if up || down {
-                rules.push("SC-PRIO-01");
-            }
-            Why {
-                rules,
-                what: format!("S rises: CV = PV = {}", st.preset.value()),
-            }
-        } else if up && down {
-            why(
-                &["SC-SIMUL-01"],
-                format!("CU and CD rise together: CV {} -> {}", b.cv, a.cv),
-            )
-        } else if by_fr {
-            why(
-                &["SC-FR-01", "SC-EDGE-01"],
-                format!(
-                    "FR rises: the held count input counts again, CV {} -> {}",
-                    b.cv, a.cv
-                ),
-            )
-        } else if (up || down) && a.cv == b.cv {
-            why(&["SC-SAT-01"], format!("CV stays at {}", b.cv))
-        } else if up || down {
-            why(
-                &["SC-EDGE-01"],
-                format!(
-                    "{} rises: CV {} -> {}",
-                    if up { "CU" } else { "CD" },
-                    b.cv,
-                    a.cv
-                ),
-            )
-        } else {
-            why(
-                &["SC-EDGE-01"],
-                "no rising CU, CD or S (a level held at 1 acts once): CV unchanged",
-            )
-        };
-        let (rule, what) = match self.block.outputs()[st.output].kind {
-            ValueKind::Bool => ("SC-Q-01", format!("Q = CV != 0 with CV = {}", a.cv)),
-            ValueKind::Word => ("SC-RANGE-01", format!("CV_BCD is CV = {} in BCD", a.cv)),
-            _ => return cv,
-        };
-        let mut rules = vec![rule];
-        if a.cv != b.cv {
-            rules.extend(cv.rules);
-            return Why {
-                rules,
-                what: format!("{what}; {}", cv.what),
-            };
-        }
-        Why { rules, what }
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use plc_timers::catalog::Port;
+    use plc_timers::catalog::{Port, ValueKind};
 
     /// `with` chooses the implementation and keeps the block and type.
     #[test]
