@@ -70,6 +70,27 @@ fn every_change_decided<O: Debug>(
     }
 }
 
+/// Runs `body` on each of the two halves of `kinds`, one thread each, requires every cover the
+/// two evaluated to be hit, and returns the cases both checked.
+fn on_two_threads<K: Copy + Sync>(kinds: &[K], body: impl Fn(&[K]) -> u64 + Sync) -> u64 {
+    let (low, high) = kinds.split_at(kinds.len() / 2 + 1);
+    let (counts, hits): (Vec<u64>, Vec<_>) = thread::scope(|scope| {
+        let workers: Vec<_> = [low, high]
+            .into_iter()
+            .map(|half| {
+                let body = &body;
+                scope.spawn(move || crate::cover::collect(|| body(half)))
+            })
+            .collect();
+        workers
+            .into_iter()
+            .map(|w| w.join().expect("worker"))
+            .unzip()
+    });
+    crate::cover::require(crate::cover::merge(hits));
+    counts.iter().sum()
+}
+
 // ---------------------------------------------------------------------------------------------
 // S5 timers
 
@@ -293,62 +314,47 @@ fn exhaustive_explain_s5() {
         .into_iter()
         .filter_map(|w| plc_timers::time::S5Time::from_word(w).ok())
         .collect();
-    let (counts, hits): (Vec<u64>, Vec<_>) = thread::scope(|scope| {
-        let workers: Vec<_> = [&S5Kind::ALL[..3], &S5Kind::ALL[3..]]
-            .into_iter()
-            .map(|kinds| {
-                let tvs = &tvs;
-                scope.spawn(move || {
-                    crate::cover::collect(|| {
-                        let mut n = 0u64;
-                        for &kind in kinds {
-                            for value in VALUES {
-                                for base in TimeBase::ALL {
-                                    for f in 0..32u8 {
-                                        let state = S5State {
-                                            running: f & 1 != 0,
-                                            value,
-                                            base,
-                                            q: f & 2 != 0,
-                                            q_on_expiry: f & 4 != 0,
-                                            s_prev: f & 8 != 0,
-                                            fr_prev: f & 16 != 0,
-                                        };
-                                        for ticks in TICKS {
-                                            for &tv in tvs {
-                                                for bits in 0..8u8 {
-                                                    let input = S5Input {
-                                                        s: bits & 1 != 0,
-                                                        r: bits & 2 != 0,
-                                                        fr: bits & 4 != 0,
-                                                        tv,
-                                                    };
-                                                    n += u64::from(prop_explain_s5(S5Case {
-                                                        kind,
-                                                        state,
-                                                        ticks,
-                                                        input,
-                                                    }));
-                                                }
-                                            }
-                                        }
-                                    }
+    let checked = on_two_threads(&S5Kind::ALL, |kinds| {
+        let mut n = 0u64;
+        for &kind in kinds {
+            for value in VALUES {
+                for base in TimeBase::ALL {
+                    for f in 0..32u8 {
+                        let state = S5State {
+                            running: f & 1 != 0,
+                            value,
+                            base,
+                            q: f & 2 != 0,
+                            q_on_expiry: f & 4 != 0,
+                            s_prev: f & 8 != 0,
+                            fr_prev: f & 16 != 0,
+                        };
+                        for ticks in TICKS {
+                            for &tv in &tvs {
+                                for bits in 0..8u8 {
+                                    let input = S5Input {
+                                        s: bits & 1 != 0,
+                                        r: bits & 2 != 0,
+                                        fr: bits & 4 != 0,
+                                        tv,
+                                    };
+                                    n += u64::from(prop_explain_s5(S5Case {
+                                        kind,
+                                        state,
+                                        ticks,
+                                        input,
+                                    }));
                                 }
                             }
                         }
-                        n
-                    })
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .map(|w| w.join().expect("worker"))
-            .unzip()
+                    }
+                }
+            }
+        }
+        n
     });
-    crate::cover::require(crate::cover::merge(hits));
     assert_eq!(
-        counts.iter().sum::<u64>(),
+        checked,
         5 * 6 * 4 * 24 * 7 * 6 * 8,
         "every valid case checked"
     );
@@ -553,52 +559,37 @@ fn iec_cover(rule: Rule, hit: bool) {
 fn exhaustive_explain_iec_u4() {
     const PTS: [i32; 5] = [-1, 0, 1, 5, 16];
     let states = all_states_u4();
-    let (counts, hits): (Vec<u64>, Vec<_>) = thread::scope(|scope| {
-        let workers: Vec<_> = [&IecKind::ALL[..2], &IecKind::ALL[2..]]
-            .into_iter()
-            .map(|kinds| {
-                let states = &states;
-                scope.spawn(move || {
-                    crate::cover::collect(|| {
-                        let mut n = 0u64;
-                        for &kind in kinds {
-                            for &state in states {
-                                for now in 0..16u64 {
-                                    for bits in 0..4u8 {
-                                        let reset = bits & 2 != 0;
-                                        if reset && kind != IecKind::Tonr {
-                                            continue;
-                                        }
-                                        for pt in PTS {
-                                            let input = IecInput {
-                                                input: bits & 1 != 0,
-                                                pt: Time::from_millis(pt),
-                                                reset,
-                                            };
-                                            n += u64::from(prop_explain_iec::<U4>(IecCase {
-                                                state,
-                                                kind,
-                                                now: CpuTime::from_millis(now),
-                                                input,
-                                            }));
-                                        }
-                                    }
-                                }
-                            }
+    let checked = on_two_threads(&IecKind::ALL, |kinds| {
+        let mut n = 0u64;
+        for &kind in kinds {
+            for &state in &states {
+                for now in 0..16u64 {
+                    for bits in 0..4u8 {
+                        let reset = bits & 2 != 0;
+                        if reset && kind != IecKind::Tonr {
+                            continue;
                         }
-                        n
-                    })
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .map(|w| w.join().expect("worker"))
-            .unzip()
+                        for pt in PTS {
+                            let input = IecInput {
+                                input: bits & 1 != 0,
+                                pt: Time::from_millis(pt),
+                                reset,
+                            };
+                            n += u64::from(prop_explain_iec::<U4>(IecCase {
+                                state,
+                                kind,
+                                now: CpuTime::from_millis(now),
+                                input,
+                            }));
+                        }
+                    }
+                }
+            }
+        }
+        n
     });
-    crate::cover::require(crate::cover::merge(hits));
     assert_eq!(
-        counts.iter().sum::<u64>(),
+        checked,
         states.len() as u64 * 16 * 5 * (3 * 2 + 4),
         "every case checked"
     );
