@@ -19,6 +19,7 @@
 mod cover;
 
 mod counter;
+mod explain;
 mod iec;
 mod s5;
 mod time;

@@ -80,6 +80,7 @@ pub mod catalog;
 pub mod counter;
 pub mod iec;
 mod operand;
+pub mod rule;
 pub mod s5;
 pub mod time;
 

@@ -14,8 +14,8 @@ use plc_timers::time::{S5Time, Time};
 use plc_timers_cli::trace::diagram::{self, Window};
 use plc_timers_cli::trace::family::block_names;
 use plc_timers_cli::trace::{
-    check, parse_block, run, vcd, vectors, BlockSpec, Error, Implementation, IntType, Location,
-    PresetValue, TraceError,
+    check, parse_block, run, run_explained, vcd, vectors, BlockSpec, Error, Implementation,
+    IntType, Location, PresetValue, TraceError,
 };
 
 /// Exit status: the check found a difference.
@@ -34,7 +34,13 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Run a CSV trace through a block; write the trace with the block's outputs appended.
-    Run(BlockArgs),
+    Run {
+        #[command(flatten)]
+        block: BlockArgs,
+        /// Add a column `rules`: the IDs of the requirements that decided each row's outputs.
+        #[arg(long)]
+        explain: bool,
+    },
     /// Compare a trace that carries outputs (another implementation's) with the reference;
     /// exit status 1 at the first difference, with the rule that decides it.
     Check {
@@ -324,9 +330,15 @@ fn vectors_into(dir: &std::path::Path) -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `run`: the trace with the reference outputs, to standard output.
-fn run_trace(args: &BlockArgs) -> Result<ExitCode, Error> {
-    run(args.spec(), args.preset.0, args.input()?, raw_stdout())?;
+/// `run`: the trace with the reference outputs (and with `--explain` the deciding rules), to
+/// standard output.
+fn run_trace(args: &BlockArgs, explain: bool) -> Result<ExitCode, Error> {
+    let (spec, preset, input) = (args.spec(), args.preset.0, args.input()?);
+    if explain {
+        run_explained(spec, preset, input, raw_stdout())?;
+    } else {
+        run(spec, preset, input, raw_stdout())?;
+    }
     Ok(ExitCode::SUCCESS)
 }
 
@@ -399,7 +411,7 @@ fn main() -> ExitCode {
         Command::S5time { value } => s5time(value),
         Command::Time { value } => time(value),
         Command::Vectors { dir } => vectors_into(dir),
-        Command::Run(args) => run_trace(args),
+        Command::Run { block, explain } => run_trace(block, *explain),
         Command::Check { block, outputs } => check_trace(block, outputs.as_deref()),
         Command::Diagram {
             block,

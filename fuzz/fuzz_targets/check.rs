@@ -5,7 +5,8 @@
 
 use libfuzzer_sys::fuzz_target;
 use plc_timers::catalog::Block;
-use plc_timers_cli::trace::{check, rules, BlockSpec};
+use plc_timers::rule::Rule;
+use plc_timers_cli::trace::{check, BlockSpec};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&selector, csv)) = data.split_first() else {
@@ -20,7 +21,12 @@ fuzz_target!(|data: &[u8]| {
     if let Ok(report) = check(BlockSpec::new(block), None, outputs, csv) {
         assert!(!report.compared.is_empty());
         if let Some(d) = report.difference {
-            assert!(d.why.rules.iter().all(|id| rules::rule(id).is_some()));
+            // The rules are the catalog's (`Rule`), and the report quotes each with its text.
+            let text = d.to_string();
+            for rule in d.why.rules {
+                assert_eq!(Rule::from_id(rule.id()), Some(rule));
+                assert!(text.contains(rule.text()));
+            }
         }
     }
 });

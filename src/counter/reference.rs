@@ -4,6 +4,16 @@
 use super::{
     outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
 };
+use crate::rule::{out, Explained, Explanation, Recorder, Rule, RuleSet};
+
+/// The outputs of `kind` as explanations mask them: every output (all are read from CV), and
+/// the Q outputs (derived from CV and PV by CNT-Q-01). CTU and CTD have Q, CV; CTUD QU, QD, CV.
+const fn masks(kind: CounterKind) -> (u8, u8) {
+    match kind {
+        CounterKind::Ctu | CounterKind::Ctd => (out::O0 | out::O1, out::O0),
+        CounterKind::Ctud => (out::O0 | out::O1 | out::O2, out::O0 | out::O1),
+    }
+}
 
 /// One IEC counter instance (its instance data: CV and the edge memories).
 ///
@@ -49,7 +59,10 @@ impl<T: CounterInt> CounterRef<T> {
 
     /// CNT-EDGE-01: a count needs a change from 0 to 1; the edge memory takes the input on every
     /// call, also while R or LD holds, so releasing R with CU held does not count.
-    fn edges(&mut self, input: &CounterInput<T>) -> (bool, bool) {
+    fn edges(&mut self, input: &CounterInput<T>, rec: &mut impl Recorder) -> (bool, bool) {
+        if input.cu != self.state.cu_prev || input.cd != self.state.cd_prev {
+            rec.state(RuleSet::of(Rule::CNT_EDGE_01));
+        }
         let up = input.cu && !self.state.cu_prev;
         let down = input.cd && !self.state.cd_prev;
         self.state.cu_prev = input.cu;
@@ -68,20 +81,80 @@ impl<T: CounterInt> CounterRef<T> {
     }
 }
 
+impl<T: CounterInt> CounterRef<T> {
+    fn call_rec(
+        &mut self,
+        kind: CounterKind,
+        input: CounterInput<T>,
+        rec: &mut impl Recorder,
+    ) -> CounterOutput<T> {
+        let (all, q) = masks(kind);
+        let masked = input.with_signals(kind.mask(input.signals()));
+        // An input the instruction lacks was 1 and is taken as 0.
+        let lacking = masked.signals() != input.signals();
+        let input = masked;
+        let (up, down) = self.edges(&input, rec);
+        let cv = self.state.cv;
+        self.state.cv = if input.r || input.ld {
+            rec.write(RuleSet::of(Rule::CNT_PRIO_01), all);
+            if input.r {
+                T::ZERO
+            } else {
+                input.pv
+            }
+        } else {
+            let counted = Self::count(cv, up, down);
+            if up || down {
+                let edge = RuleSet::of(Rule::CNT_EDGE_01);
+                rec.write(
+                    if up && down {
+                        edge.with(Rule::CNT_SIMUL_01)
+                    } else {
+                        edge.with_if(counted == cv, Rule::CNT_SAT_01)
+                            // Counting up goes on past PV.
+                            .with_if(up && cv >= input.pv, Rule::CNT_Q_01)
+                    },
+                    all,
+                );
+            }
+            counted
+        };
+        rec.add(RuleSet::EMPTY.with_if(lacking, Rule::CNT_INPUTS_01), all);
+        rec.add(RuleSet::of(Rule::CNT_Q_01), q);
+        outputs(self.state.cv, input.pv)
+    }
+
+    /// [`CounterOps::call`], explained: the same outputs and state, with the rules that
+    /// decided each output (catalog order: Q, CV for CTU and CTD; QU, QD, CV for CTUD) and
+    /// acted on the state ([`Explained`]).
+    ///
+    /// ```
+    /// use plc_timers::counter::{CounterInput, CounterKind, CounterRef};
+    /// use plc_timers::rule::Rule;
+    /// let mut ctud = CounterRef::<i16>::new();
+    /// let e = ctud.call_explained(CounterKind::Ctud, CounterInput { cu: true, r: true, ..Default::default() });
+    /// assert_eq!(e.outputs[2].iter().collect::<Vec<_>>(), [Rule::CNT_PRIO_01]); // CV: R
+    /// assert!(e.state.contains(Rule::CNT_EDGE_01)); // the CU memory took the input
+    /// let e = ctud.call_explained(CounterKind::Ctud, CounterInput { cu: true, ..Default::default() });
+    /// assert_eq!(e.output.cv, 0); // releasing R with CU held does not count
+    /// assert!(e.outputs[2].is_empty());
+    /// ```
+    pub fn call_explained(
+        &mut self,
+        kind: CounterKind,
+        input: CounterInput<T>,
+    ) -> Explained<CounterOutput<T>> {
+        let mut rec = Explanation::default();
+        let o = self.call_rec(kind, input, &mut rec);
+        rec.finish(o)
+    }
+}
+
 impl<T: CounterInt> CounterOps<T> for CounterRef<T> {
     /// One call with the inputs this kind has (CNT-INPUTS-01). CNT-PRIO-01: R before LD before
     /// counting; R and LD are levels.
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
-        let input = input.with_signals(kind.mask(input.signals()));
-        let (up, down) = self.edges(&input);
-        self.state.cv = if input.r {
-            T::ZERO
-        } else if input.ld {
-            input.pv
-        } else {
-            Self::count(self.state.cv, up, down)
-        };
-        outputs(self.state.cv, input.pv)
+        self.call_rec(kind, input, &mut ())
     }
 
     fn state(&self) -> CounterState<T> {

@@ -5,6 +5,7 @@
 //! `spec/requirements/iec.toml`.
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
+use crate::rule::{out, Explained, Explanation, Recorder, Rule, RuleSet};
 use crate::time::clock::ClockWord;
 use crate::time::{CpuTime, Time};
 
@@ -30,6 +31,20 @@ pub struct IecTimerRef<C = u32> {
 /// `PT` as the instruction uses it: negative taken as 0 (IEC-PT-NEG-01), in clock units.
 fn preset<C: ClockWord>(pt: Time) -> C {
     C::from_preset(pt.clamp_negative())
+}
+
+/// The outputs Q and ET, as explanations mask them.
+const Q: u8 = out::O0;
+const ET: u8 = out::O1;
+
+/// The rule of each kind's reaction to IN (Table 8-20); TONR's start is its resume rule.
+pub const fn kind_rule(kind: IecKind) -> Rule {
+    match kind {
+        IecKind::Tp => Rule::TP_IN_01,
+        IecKind::Ton => Rule::TON_IN_01,
+        IecKind::Tof => Rule::TOF_IN_01,
+        IecKind::Tonr => Rule::TONR_RESUME_01,
+    }
 }
 
 /// Q while the timer is timing: TP's pulse and TOF's delayed Q are 1; TON and TONR wait.
@@ -81,7 +96,16 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// IEC-START-01: on the starting edge the CPU clock is copied into START and the preset is
     /// latched; it stays in force while the timer runs (IEC-PT-LATCH-01).
-    fn start(&mut self, now: C, pt: Time, kind: IecKind) {
+    ///
+    /// `also`: further rules that made this start (TP-RETRIGGER-01).
+    fn start(&mut self, now: C, pt: Time, kind: IecKind, also: RuleSet, rec: &mut impl Recorder) {
+        rec.write(
+            also.with(kind_rule(kind))
+                .with(Rule::IEC_START_01)
+                .with(Rule::IEC_PT_LATCH_01)
+                .with(Rule::IEC_EDGE_01),
+            Q | ET,
+        );
         let s = &mut self.state;
         s.running = true;
         s.start = now;
@@ -93,18 +117,38 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// IEC-UPDATE-01: an update subtracts START from the CPU clock (modulo 2^BITS, IEC-WRAP-01),
     /// compares with PT and sets ELAPSED and Q; ELAPSED stops at PT (IEC-EXPIRY-01: expiry at
     /// ET >= PT).
-    fn update(&mut self, now: C, kind: IecKind) {
+    ///
+    /// `box_pt`: the preset at the box in a box call (`None` for a read through the structure):
+    /// when it differs from the latched one, the latch decided (IEC-PT-LATCH-01).
+    fn update(&mut self, now: C, kind: IecKind, box_pt: Option<Time>, rec: &mut impl Recorder) {
         let s = &mut self.state;
         if !s.running {
             return;
         }
         let elapsed = now.elapsed_since(s.start);
+        let rules = RuleSet::EMPTY
+            .with_if(now < s.start, Rule::IEC_WRAP_01)
+            .with_if(
+                box_pt.is_some_and(|pt| preset::<C>(pt) != s.pt),
+                Rule::IEC_PT_LATCH_01,
+            );
         if elapsed >= s.pt {
+            rec.write(
+                rules
+                    .with(Rule::IEC_EXPIRY_01)
+                    .with_if(s.pt == C::ZERO, Rule::IEC_PT0_01),
+                Q | ET,
+            );
             s.et = s.pt;
             s.q = q_after_expiry(kind);
             s.running = false;
             s.start = C::default();
         } else {
+            // ET follows the clock (IEC-START-01: each update computes now - START); Q stays
+            // the running one because ET < PT (IEC-EXPIRY-01).
+            rec.state(RuleSet::of(Rule::IEC_START_01));
+            rec.add(rules.with(Rule::IEC_START_01), ET);
+            rec.add(rules.with(Rule::IEC_EXPIRY_01), Q);
             s.et = elapsed;
             s.q = q_while_running(kind);
         }
@@ -114,7 +158,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// instruction that last ran on it happens first (none before the first call).
     fn access(&mut self, now: CpuTime) -> &IecState<C> {
         if let Some(kind) = self.state.kind {
-            self.update(now.clock(), kind);
+            self.update(now.clock(), kind, None, &mut ());
         }
         &self.state
     }
@@ -131,50 +175,63 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// TP (Table 8-20: "changing PT or IN while running has no effect"): a rising IN starts a
     /// pulse of PT when no pulse runs; after the pulse ET stays at PT while IN = 1 and returns
     /// to 0 when IN = 0 (TP-ET-01).
-    fn tp(&mut self, now: C, input: IecInput) {
-        self.update(now, IecKind::Tp);
+    fn tp(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+        let pt = Some(input.pt);
+        let was_running = self.state.running;
+        self.update(now, IecKind::Tp, pt, rec);
         let rising = input.input && !self.state.input;
         if rising && !self.state.running {
-            self.start(now, input.pt, IecKind::Tp);
-            self.update(now, IecKind::Tp);
+            // TP-RETRIGGER-01: the pulse ended in this very call's update.
+            let retrigger = RuleSet::EMPTY.with_if(was_running, Rule::TP_RETRIGGER_01);
+            self.start(now, input.pt, IecKind::Tp, retrigger, rec);
+            self.update(now, IecKind::Tp, pt, rec);
         }
         if !self.state.running && !input.input {
+            if self.state.et != C::ZERO {
+                rec.write(RuleSet::of(Rule::TP_IN_01), ET);
+            }
             self.state.et = C::default();
         }
     }
 
     /// TON: a rising IN starts timing; Q = 1 once ET reaches PT while IN stays 1; IN = 0 resets
     /// and stops (Table 8-20).
-    fn ton(&mut self, now: C, input: IecInput) {
+    fn ton(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+        let pt = Some(input.pt);
         if !input.input {
+            rec.write(RuleSet::of(Rule::TON_IN_01), Q | ET);
             self.reset_and_stop();
         } else if !self.state.input {
-            self.start(now, input.pt, IecKind::Ton);
-            self.update(now, IecKind::Ton);
+            self.start(now, input.pt, IecKind::Ton, RuleSet::EMPTY, rec);
+            self.update(now, IecKind::Ton, pt, rec);
         } else {
-            self.update(now, IecKind::Ton);
+            self.update(now, IecKind::Ton, pt, rec);
         }
     }
 
     /// TOF: Q = 1 while IN = 1; a falling IN starts timing, Q falls when ET reaches PT; IN = 1
     /// resets and stops (Table 8-20).
-    fn tof(&mut self, now: C, input: IecInput) {
+    fn tof(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+        let pt = Some(input.pt);
         if input.input {
+            rec.write(RuleSet::of(Rule::TOF_IN_01), Q | ET);
             self.reset_and_stop();
             self.state.q = true;
         } else if self.state.input {
-            self.start(now, input.pt, IecKind::Tof);
-            self.update(now, IecKind::Tof);
+            self.start(now, input.pt, IecKind::Tof, RuleSet::EMPTY, rec);
+            self.update(now, IecKind::Tof, pt, rec);
         } else {
-            self.update(now, IecKind::Tof);
+            self.update(now, IecKind::Tof, pt, rec);
         }
     }
 
     /// TONR: R resets ET and Q (TONR-R-01, before anything else); while IN = 1 the timer
     /// accumulates, resuming from the accumulated ET with the PT of the moment it resumes
     /// (TONR-RESUME-01); IN = 0 stops without reset (Table 8-20); Q stays 1 after expiry until R.
-    fn tonr(&mut self, now: C, input: IecInput) {
+    fn tonr(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+        let pt = Some(input.pt);
         if input.reset {
+            rec.write(RuleSet::of(Rule::TONR_R_01), Q | ET);
             self.reset_and_stop();
             return;
         }
@@ -184,28 +241,39 @@ impl<C: ClockWord> IecTimerRef<C> {
                 // Resume: START shifted back by the accumulated time, so that an update's
                 // `now - START` is the accumulated total.
                 let accumulated = self.state.et;
-                self.start(now, input.pt, IecKind::Tonr);
+                self.start(now, input.pt, IecKind::Tonr, RuleSet::EMPTY, rec);
                 self.state.start = now.elapsed_since(accumulated);
             }
-            self.update(now, IecKind::Tonr);
+            self.update(now, IecKind::Tonr, pt, rec);
         } else if self.state.running {
-            self.update(now, IecKind::Tonr);
+            self.update(now, IecKind::Tonr, pt, rec);
             if self.state.running {
+                rec.state(RuleSet::of(Rule::TONR_IN_01));
                 self.state.running = false;
                 self.state.start = C::default();
             }
         }
     }
-}
 
-impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
-    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+    fn call_rec(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+        rec: &mut impl Recorder,
+    ) -> IecOutput<C> {
         let now = now.clock::<C>();
         match kind {
-            IecKind::Tp => self.tp(now, input),
-            IecKind::Ton => self.ton(now, input),
-            IecKind::Tof => self.tof(now, input),
-            IecKind::Tonr => self.tonr(now, input),
+            IecKind::Tp => self.tp(now, input, rec),
+            IecKind::Ton => self.ton(now, input, rec),
+            IecKind::Tof => self.tof(now, input, rec),
+            IecKind::Tonr => self.tonr(now, input, rec),
+        }
+        if self.state.input != input.input {
+            rec.state(RuleSet::of(Rule::IEC_EDGE_01));
+        }
+        if self.state.kind != Some(kind) {
+            rec.state(RuleSet::of(Rule::IEC_ACCESS_01));
         }
         self.state.kind = Some(kind);
         self.state.input = input.input;
@@ -213,6 +281,36 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
             q: self.state.q,
             et: self.state.et,
         }
+    }
+
+    /// [`IecTimerOps::call`], explained: the same outputs and state, with the rules that
+    /// decided Q and ET and acted on the state ([`Explained`]).
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// let e = ton.call_explained(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, plc_timers::time!("T#0MS")));
+    /// assert!(e.output.q); // PT = 0: on in the starting call
+    /// assert!(e.outputs[0].contains(Rule::IEC_PT0_01) && e.outputs[0].contains(Rule::IEC_EXPIRY_01));
+    /// ```
+    pub fn call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+    ) -> Explained<IecOutput<C>> {
+        let mut rec = Explanation::default();
+        let o = self.call_rec(kind, now, input, &mut rec);
+        rec.finish(o)
+    }
+}
+
+impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
+    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+        self.call_rec(kind, now, input, &mut ())
     }
 
     /// IEC-ACCESS-01: reading Q through the structure updates the timer first.

@@ -5,8 +5,9 @@
 //! pass over the area ([`TimerMemory::tick`]); the STL operations act on one timer.
 
 use super::word::{ticks_between_fast, TimerWord};
-use super::{S5Input, S5Kind, S5Output, S5State};
+use super::{S5Input, S5Kind, S5Output, S5State, S5TimerOps, S5TimerRef};
 use crate::operand::{self, NoSuchOperand, Operand};
+use crate::rule::{Explained, Explanation};
 use crate::time::{CpuTime, S5Time, TimeBase};
 
 /// A timer memory area of `N` timers (`T 0` .. `T N-1`; 256 by default, the number LAD can
@@ -223,5 +224,133 @@ impl<const N: usize> TimerMemory<N> {
         let w = self.word(index)?;
         *w = w.execute(kind, input);
         Ok(w.output())
+    }
+
+    /// Runs `op` on the reference timer in the state of timer `index` (its previous execution
+    /// at the area's clock, so that it applies the ticks the area would), stores the state it
+    /// leaves, and gives the outputs with the rules `op` recorded. This is the reference path
+    /// of the explained operations: the words themselves have no recorder.
+    fn explained(
+        &mut self,
+        index: usize,
+        op: impl FnOnce(&mut S5TimerRef, &mut Explanation),
+    ) -> Result<Explained<S5Output>, NoSuchOperand> {
+        let state = self.read(index)?.state();
+        let mut rec = Explanation::default();
+        // A word always holds a valid state, so the reference accepts it.
+        let Some(mut timer) = S5TimerRef::from_state(state, self.now) else {
+            return Ok(rec.finish(self.read(index)?.output()));
+        };
+        op(&mut timer, &mut rec);
+        let w = self.word(index)?;
+        // The reference keeps its state valid (S5TMR-RANGE-01), so the word takes it.
+        if let Some(new) = TimerWord::from_state(timer.state()) {
+            *w = new;
+        }
+        Ok(rec.finish(w.output()))
+    }
+
+    /// [`TimerMemory::call`], explained through the reference ([`S5TimerRef::call_explained`]):
+    /// the same outputs and words (S5-EQUIV-02), with the rules that decided them.
+    ///
+    /// ```
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::s5::{S5Input, S5Kind, TimerMemory};
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let mut timers = TimerMemory::<1>::new();
+    /// let on = S5Input::new(true, false, plc_timers::s5time!("S5T#20MS"));
+    /// let e = timers.call_explained(0, S5Kind::SOdt, CpuTime::ZERO, on)?;
+    /// assert!(e.outputs[1].contains(Rule::SD_Q_01)); // BI: loaded by the start
+    /// let e = timers.call_explained(0, S5Kind::SOdt, CpuTime::from_millis(20), on)?;
+    /// assert!(e.output.q && e.outputs[0].contains(Rule::S5TMR_TICK_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn call_explained(
+        &mut self,
+        index: usize,
+        kind: S5Kind,
+        now: CpuTime,
+        input: S5Input,
+    ) -> Result<Explained<S5Output>, NoSuchOperand> {
+        let from = self.now;
+        let e = self.explained(index, |t, rec| {
+            if now > from {
+                t.call_rec(kind, now, input, rec);
+            } else {
+                // The area's clock does not go back: no tick, as in `call`.
+                t.execute_rec(kind, input, rec);
+            }
+        })?;
+        self.advance_to_except(now, index);
+        Ok(e)
+    }
+
+    /// [`TimerMemory::fr`], explained: the rule that acted (S5TMR-FR-01), if any.
+    ///
+    /// ```
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::s5::TimerMemory;
+    /// let mut timers = TimerMemory::<1>::new();
+    /// assert!(timers.fr_explained(0, true)?.state.contains(Rule::S5TMR_FR_01));
+    /// assert!(timers.fr_explained(0, true)?.state.is_empty()); // FR held does nothing
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn fr_explained(
+        &mut self,
+        index: usize,
+        fr: bool,
+    ) -> Result<Explained<S5Output>, NoSuchOperand> {
+        self.explained(index, |t, rec| t.fr_rec(fr, rec))
+    }
+
+    /// [`TimerMemory::start`], explained.
+    ///
+    /// ```
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::s5::{S5Kind, TimerMemory};
+    /// let mut timers = TimerMemory::<1>::new();
+    /// let e = timers.start_explained(0, S5Kind::SPext, true, plc_timers::s5time!("S5T#1S"))?;
+    /// assert!(e.output.q && e.outputs[0].contains(Rule::SE_RUN_ON_01) && e.outputs[0].contains(Rule::S5TMR_EDGE_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn start_explained(
+        &mut self,
+        index: usize,
+        kind: S5Kind,
+        s: bool,
+        tv: S5Time,
+    ) -> Result<Explained<S5Output>, NoSuchOperand> {
+        self.explained(index, |t, rec| {
+            t.start_rec(kind, &S5Input::new(s, false, tv), rec)
+        })
+    }
+
+    /// [`TimerMemory::reset`], explained.
+    ///
+    /// ```
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::s5::TimerMemory;
+    /// let mut timers = TimerMemory::<1>::new();
+    /// assert_eq!(timers.reset_explained(0, true)?.outputs[0].iter().next(), Some(Rule::S5TMR_R_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn reset_explained(
+        &mut self,
+        index: usize,
+        r: bool,
+    ) -> Result<Explained<S5Output>, NoSuchOperand> {
+        self.explained(index, |t, rec| t.reset_rec(r, rec))
+    }
+
+    /// [`TimerMemory::advance_to`] for every timer but `index`, whose ticks the reference
+    /// applied already.
+    fn advance_to_except(&mut self, now: CpuTime, index: usize) {
+        if now <= self.now {
+            return;
+        }
+        let keep = self.words[index];
+        self.advance_to(now);
+        self.words[index] = keep;
     }
 }

@@ -6,7 +6,23 @@
 //! decisions.
 
 use super::{ticks_between, S5Input, S5Kind, S5Output, S5State, S5TimerOps};
+use crate::rule::{out, Explained, Explanation, Recorder, Rule, RuleSet};
 use crate::time::CpuTime;
+
+/// The outputs Q (status) and BI, BCD (the value with its base), as explanations mask them.
+const Q: u8 = out::O0;
+const VALUE: u8 = out::O1 | out::O2;
+
+/// The rule of each kind's start logic and status (LAD manual §9.3-9.7).
+pub const fn kind_rule(kind: S5Kind) -> Rule {
+    match kind {
+        S5Kind::SPulse => Rule::SP_Q_01,
+        S5Kind::SPext => Rule::SE_RUN_ON_01,
+        S5Kind::SOdt => Rule::SD_Q_01,
+        S5Kind::SOdts => Rule::SS_Q_01,
+        S5Kind::SOffdt => Rule::SF_Q_01,
+    }
+}
 
 /// One S5 timer, executed as the LAD box (or its STL sequence `FR`, `SP/SE/SD/SS/SF`, `R`) at
 /// successive CPU times.
@@ -90,16 +106,23 @@ impl S5TimerRef {
     /// the time has run out and the status changes (Berger §7). Of `ticks` ticks, at most
     /// `value` take effect.
     pub fn tick(&mut self, ticks: u64) {
+        self.tick_rec(ticks, &mut ());
+    }
+
+    fn tick_rec(&mut self, ticks: u64, rec: &mut impl Recorder) {
         let s = &mut self.state;
         if !s.running || ticks == 0 || s.value == 0 {
             return;
         }
+        let tick = RuleSet::of(Rule::S5TMR_TICK_01);
         if ticks >= u64::from(s.value) {
             s.value = 0;
             Self::expire(s);
+            rec.write(tick.with(Rule::S5TMR_EXPIRE_01), Q | VALUE);
         } else {
             // ticks < value <= 999, so the cast is exact.
             s.value -= ticks as u16;
+            rec.write(tick, VALUE);
         }
     }
 
@@ -113,9 +136,13 @@ impl S5TimerRef {
 
     /// S5TMR-ZERO-01 (Berger §7): a timer started with the value 0 stays active until the CPU,
     /// processing the timer, finds the time run out: at its next execution.
-    fn process_zero_value(&mut self) {
+    fn process_zero_value(&mut self, rec: &mut impl Recorder) {
         if self.state.running && self.state.value == 0 {
             Self::expire(&mut self.state);
+            rec.write(
+                RuleSet::of(Rule::S5TMR_ZERO_01).with(Rule::S5TMR_EXPIRE_01),
+                Q,
+            );
         }
     }
 
@@ -123,7 +150,12 @@ impl S5TimerRef {
     /// input, and nothing else. A start operation executed with RLO = 1 then sees a rising edge
     /// and restarts the timer; with RLO = 0 nothing starts (an off-delay needs a falling edge,
     /// which a cleared memory cannot give).
-    fn enable(&mut self, fr: bool) {
+    fn enable(&mut self, fr: bool, rec: &mut impl Recorder) {
+        if fr != self.state.fr_prev {
+            // The FR edge clears the start memory; the FR memory takes the RLO (both are the
+            // rule's action).
+            rec.state(RuleSet::of(Rule::S5TMR_FR_01));
+        }
         if fr && !self.state.fr_prev {
             self.state.s_prev = false;
         }
@@ -158,9 +190,32 @@ impl S5TimerRef {
 
     /// The start logic of the kind (LAD manual §9.3-9.7). Every start needs a signal change at S
     /// (S5TMR-EDGE-01): rising, or falling for S_OFFDT; an FR edge makes a held S count as rising.
-    fn start_logic(&mut self, kind: S5Kind, input: &S5Input) {
+    ///
+    /// `fr_edge`: an FR edge cleared the start memory in this execution (the start it makes
+    /// possible is then FR's too).
+    fn start_logic(
+        &mut self,
+        kind: S5Kind,
+        input: &S5Input,
+        fr_edge: bool,
+        rec: &mut impl Recorder,
+    ) {
         let rising = input.s && !self.state.s_prev;
         let falling = !input.s && self.state.s_prev;
+        let rule = RuleSet::of(kind_rule(kind));
+        let started = if kind.starts_on_falling_edge() {
+            falling
+        } else {
+            rising
+        };
+        if started {
+            rec.write(
+                rule.with(Rule::S5TMR_EDGE_01)
+                    .with_if(fr_edge && rising, Rule::S5TMR_FR_01)
+                    .with_if(input.tv.units() == 0, Rule::S5TMR_ZERO_01),
+                Q | VALUE,
+            );
+        }
         match kind {
             // §9.3 (SP-Q-01): starts on a rising S, runs while S = 1; S falling before the end
             // stops it. S cannot rise while the pulse runs, except after an FR edge, which
@@ -170,6 +225,7 @@ impl S5TimerRef {
                     self.start(kind, input);
                 } else if !input.s && self.state.running {
                     self.stop();
+                    rec.write(rule.with(Rule::S5TMR_STOP_01), Q);
                 }
             }
             // §9.4 (SE-RUN-ON-01): starts on a rising S, runs on when S falls; a rising S while
@@ -185,6 +241,11 @@ impl S5TimerRef {
                 if rising {
                     self.start(kind, input);
                 } else if !input.s {
+                    // S = 0 stops a running S_ODT and clears an expired Q (nothing to do
+                    // otherwise).
+                    if self.state.running || self.state.q {
+                        rec.write(rule.with_if(self.state.running, Rule::S5TMR_STOP_01), Q);
+                    }
                     self.stop();
                 }
             }
@@ -208,8 +269,12 @@ impl S5TimerRef {
                     s.running = false;
                     s.q = true;
                     s.q_on_expiry = false;
+                    rec.write(rule, Q);
                 }
             }
+        }
+        if self.state.s_prev != input.s {
+            rec.state(RuleSet::of(Rule::S5TMR_EDGE_01));
         }
         self.state.s_prev = input.s;
     }
@@ -217,8 +282,9 @@ impl S5TimerRef {
     /// S5TMR-R-01 (Berger §7.1.3; LAD manual §9.3-9.7): while R = 1 the timer is reset: stopped,
     /// value and base cleared, Q = 0. Applied after the start logic of the same execution, so a
     /// scan for 1 gives 0 as long as R = 1.
-    fn reset(&mut self, r: bool) {
+    fn reset(&mut self, r: bool, rec: &mut impl Recorder) {
         if r {
+            rec.write(RuleSet::of(Rule::S5TMR_R_01), Q | VALUE);
             self.state = S5State {
                 s_prev: self.state.s_prev,
                 fr_prev: self.state.fr_prev,
@@ -229,12 +295,74 @@ impl S5TimerRef {
 
     /// One execution of the box `kind` with the OS ticks since the previous execution already
     /// applied ([`S5TimerRef::tick`]): the value-0 check, `FR`, the start logic, `R`.
-    fn execute(&mut self, kind: S5Kind, input: S5Input) -> S5Output {
-        self.process_zero_value();
-        self.enable(input.fr);
-        self.start_logic(kind, &input);
-        self.reset(input.r);
+    pub(crate) fn execute_rec(
+        &mut self,
+        kind: S5Kind,
+        input: S5Input,
+        rec: &mut impl Recorder,
+    ) -> S5Output {
+        self.process_zero_value(rec);
+        let fr_edge = input.fr && !self.state.fr_prev && self.state.s_prev;
+        self.enable(input.fr, rec);
+        self.start_logic(kind, &input, fr_edge, rec);
+        self.reset(input.r, rec);
         self.state.output()
+    }
+
+    pub(crate) fn call_rec(
+        &mut self,
+        kind: S5Kind,
+        now: CpuTime,
+        input: S5Input,
+        rec: &mut impl Recorder,
+    ) -> S5Output {
+        self.tick_rec(ticks_between(self.last_call, now, self.state.base), rec);
+        self.last_call = now;
+        self.execute_rec(kind, input, rec)
+    }
+
+    /// [`S5TimerOps::call`], explained: the same outputs and state, with the rules that decided
+    /// each output (Q, BI, BCD) and acted on the state ([`Explained`]).
+    ///
+    /// ```
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::s5::{S5Input, S5Kind, S5TimerRef};
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let mut sp = S5TimerRef::new();
+    /// let zero = S5Input::new(true, false, plc_timers::s5time!("S5T#0MS"));
+    /// let e = sp.call_explained(S5Kind::SPulse, CpuTime::ZERO, zero);
+    /// assert!(e.output.q); // active in the starting execution ...
+    /// assert!(e.outputs[0].contains(Rule::S5TMR_ZERO_01));
+    /// let e = sp.call_explained(S5Kind::SPulse, CpuTime::ZERO, zero);
+    /// assert!(!e.output.q); // ... found run out at the next
+    /// assert!(e.outputs[0].contains(Rule::S5TMR_ZERO_01) && e.outputs[0].contains(Rule::S5TMR_EXPIRE_01));
+    /// ```
+    pub fn call_explained(
+        &mut self,
+        kind: S5Kind,
+        now: CpuTime,
+        input: S5Input,
+    ) -> Explained<S5Output> {
+        let mut rec = Explanation::default();
+        let o = self.call_rec(kind, now, input, &mut rec);
+        rec.finish(o)
+    }
+
+    /// `FR T n` alone, recorded.
+    pub(crate) fn fr_rec(&mut self, fr: bool, rec: &mut impl Recorder) {
+        self.enable(fr, rec);
+    }
+
+    /// `SP`…`SF T n` alone (the value-0 check, then the start logic), recorded.
+    pub(crate) fn start_rec(&mut self, kind: S5Kind, input: &S5Input, rec: &mut impl Recorder) {
+        self.process_zero_value(rec);
+        self.start_logic(kind, input, false, rec);
+    }
+
+    /// `R T n` alone, recorded.
+    pub(crate) fn reset_rec(&mut self, r: bool, rec: &mut impl Recorder) {
+        self.reset(r, rec);
     }
 }
 
@@ -242,9 +370,7 @@ impl S5TimerOps for S5TimerRef {
     /// One execution at CPU time `now` (not before the previous one): the ticks of the timer's
     /// base in `(last_call, now]` are applied first.
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
-        self.tick(ticks_between(self.last_call, now, self.state.base));
-        self.last_call = now;
-        self.execute(kind, input)
+        self.call_rec(kind, now, input, &mut ())
     }
 
     fn state(&self) -> S5State {

@@ -10,11 +10,9 @@ use std::io::{Read, Write};
 use plc_timers::catalog::{Block, Port, ValueKind};
 
 use super::error::{show, Error, Location, TraceError};
-use super::family::{
-    dispatch, Adapter, BlockSpec, Outputs, PresetValue, Signals, Step, Value, Visit, Why,
-};
+use super::family::{dispatch, Adapter, BlockSpec, Outputs, PresetValue, Signals, Value, Visit};
 use super::reader::{Reader, Record};
-use super::rules;
+use plc_timers::rule::{RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
 
 /// The name of the time column.
 pub const TIME_COLUMN: &str = "t_ms";
@@ -259,11 +257,12 @@ fn write_value(out: &mut Vec<u8>, v: Value) {
 struct Row<F: Adapter> {
     /// `t_ms`, or the row's index (0-based) when the trace has none.
     t: u64,
-    /// The previous row's `t` (0 before the first row).
-    last: u64,
     signals: Signals,
     preset: F::Preset,
     output: F::Output,
+    /// With [`Engine::explain`]: the rules that decided each output (catalog order), and the
+    /// rules that acted on the state.
+    rules: Option<([RuleSet; RULE_OUTPUTS], RuleSet)>,
 }
 
 /// A family with its resolved header, driven row by row.
@@ -277,6 +276,8 @@ struct Engine<F: Adapter> {
     cached: Option<(Vec<u8>, F::Preset)>,
     last: u64,
     rows: u64,
+    /// Whether each call is explained ([`Adapter::call_explained`]).
+    explain: bool,
 }
 
 impl<F: Adapter> Engine<F> {
@@ -310,6 +311,7 @@ impl<F: Adapter> Engine<F> {
             cached: None,
             last: 0,
             rows: 0,
+            explain: false,
         })
     }
 
@@ -381,17 +383,20 @@ impl<F: Adapter> Engine<F> {
                 )));
             }
         };
-        // 0 before the first row, as the blocks' own previous call.
-        let last = self.last;
-        let output = self.family.call(t, signals, preset);
+        let (output, rules) = if self.explain {
+            let e = self.family.call_explained(t, signals, preset);
+            (e.output, Some((e.outputs, e.state)))
+        } else {
+            (self.family.call(t, signals, preset), None)
+        };
         self.last = t;
         self.rows += 1;
         Ok(Row {
             t,
-            last,
             signals,
             preset,
             output,
+            rules,
         })
     }
 
@@ -463,30 +468,55 @@ pub fn run<R: Read, W: Write>(
     input: R,
     output: W,
 ) -> Result<u64, Error> {
-    struct V<R, W>(Option<PresetValue>, R, W);
-    impl<R: Read, W: Write> Visit for V<R, W> {
-        type Out = Result<u64, Error>;
-        fn visit<F: Adapter>(self, family: F) -> Self::Out {
-            run_family(family, self.0, self.1, self.2)
-        }
-    }
-    dispatch(spec, V(preset, input, output))
+    dispatch(spec, V(preset, input, output, false))
 }
+
+/// [`run`] with one more column, `rules`: the IDs of the requirements that decided the row's
+/// outputs (the reference's explanation, [`plc_timers::rule::Explained`]), separated by
+/// blanks, in catalog order (`plc-timers run --explain`). The optimized implementation gives
+/// no rules: its column is empty.
+pub fn run_explained<R: Read, W: Write>(
+    spec: BlockSpec,
+    preset: Option<PresetValue>,
+    input: R,
+    output: W,
+) -> Result<u64, Error> {
+    dispatch(spec, V(preset, input, output, true))
+}
+
+struct V<R, W>(Option<PresetValue>, R, W, bool);
+
+impl<R: Read, W: Write> Visit for V<R, W> {
+    type Out = Result<u64, Error>;
+    fn visit<F: Adapter>(self, family: F) -> Self::Out {
+        run_family(family, self.0, self.1, self.2, self.3)
+    }
+}
+
+/// The name of the column `run --explain` adds.
+pub const RULES_COLUMN: &str = "rules";
 
 fn run_family<F: Adapter, R: Read, W: Write>(
     family: F,
     preset: Option<PresetValue>,
     input: R,
     mut output: W,
+    explain: bool,
 ) -> Result<u64, Error> {
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
     let mut engine = Engine::new(family, &header, Mode::Inputs, preset)?;
+    engine.explain = explain;
+    let n_outputs = engine.family.block().outputs().len();
     let mut out: Vec<u8> = Vec::with_capacity(OUT_BUFFER + 1024);
     out.extend_from_slice(header.raw());
     for p in engine.family.block().outputs() {
         out.push(b',');
         out.extend_from_slice(p.name().as_bytes());
+    }
+    if explain {
+        out.push(b',');
+        out.extend_from_slice(RULES_COLUMN.as_bytes());
     }
     out.push(b'\n');
     let result = loop {
@@ -503,6 +533,18 @@ fn run_family<F: Adapter, R: Read, W: Write>(
         for &v in engine.family.values(&row.output).as_slice() {
             out.push(b',');
             write_value(&mut out, v);
+        }
+        if let Some((outputs, _)) = row.rules {
+            out.push(b',');
+            let all = outputs[..n_outputs]
+                .iter()
+                .fold(RuleSet::EMPTY, |a, o| a.union(*o));
+            for (k, rule) in all.iter().enumerate() {
+                if k > 0 {
+                    out.push(b' ');
+                }
+                out.extend_from_slice(rule.id().as_bytes());
+            }
         }
         out.push(b'\n');
         if out.len() >= OUT_BUFFER {
@@ -528,6 +570,30 @@ pub struct ContextRow {
     pub text: String,
     /// The reference's values of the compared outputs at that row.
     pub reference: Vec<(&'static str, Value)>,
+}
+
+/// Why the reference gives its value at a difference, from the core's explanation
+/// ([`plc_timers::rule::Explained`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Why {
+    /// The rules that decided the output at the row (empty when no rule acted on it there: it
+    /// kept the value of an earlier row).
+    pub rules: RuleSet,
+    /// The latest earlier row where rules acted on the state that the row's own rules do not
+    /// cover (the set whose cleared memory made the count, the start of the running time, the
+    /// row where PT was latched): its line and those rules.
+    pub earlier: Option<(u64, RuleSet)>,
+    /// Whether the implementation explains its calls (the optimized forms do not: check
+    /// against the reference, without `--optimized`, to see the rules).
+    pub explained: bool,
+}
+
+impl Why {
+    /// Every rule named: at the row and at the earlier row.
+    pub fn all(&self) -> RuleSet {
+        self.rules
+            .union(self.earlier.map_or(RuleSet::EMPTY, |(_, r)| r))
+    }
 }
 
 /// The first place where a trace's outputs differ from the reference, and why the reference
@@ -557,13 +623,31 @@ impl fmt::Display for Difference {
             "DIFFERENT at line {}, column {} ({}): the reference gives {}, the trace has {}",
             self.line, self.column, self.output, self.expected, self.found
         )?;
-        writeln!(f, "at this row: {}", self.why.what)?;
-        for id in &self.why.rules {
+        let why = &self.why;
+        if !why.explained {
             writeln!(
                 f,
-                "{id}: {}",
-                rules::rule(id).unwrap_or("(not in the catalog)")
+                "(the optimized implementation gives no rules: check without --optimized to \
+                 see the requirements that decide this value)"
             )?;
+        } else if why.rules.is_empty() {
+            writeln!(
+                f,
+                "no rule acted on {} at this row: it keeps its value from earlier rows",
+                self.output
+            )?;
+        } else {
+            writeln!(f, "decided at this row by:")?;
+        }
+        for rule in why.rules {
+            writeln!(f, "{rule}: {}", rule.text())?;
+        }
+        if let Some((line, rules)) = why.earlier {
+            writeln!(f, "after line {line}, where these acted and still matter:")?;
+            // The rules named at the row already are not repeated.
+            for rule in rules.difference(why.rules) {
+                writeln!(f, "{rule}: {}", rule.text())?;
+            }
         }
         writeln!(f, "rows up to it, with the reference's outputs:")?;
         let width = self
@@ -685,6 +769,13 @@ fn check_family<F: Adapter, R: Read>(
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
     let mut engine = Engine::new(family, &header, Mode::WithOutputs, preset)?;
+    engine.explain = true;
+    let explained = engine.family.explains();
+    // Per set of rules that acted on the state, the last line where it did, not continuing
+    // the row before (few distinct sets occur, so this stays small on any trace).
+    let mut acted: Vec<(RuleSet, u64)> = Vec::new();
+    // The rules that acted on the state at the row before.
+    let mut previous = RuleSet::EMPTY;
     // The compared columns: (column, output index), in the order of the catalog.
     let mut compared = Vec::with_capacity(chosen.len());
     for &o in &chosen {
@@ -721,7 +812,6 @@ fn check_family<F: Adapter, R: Read>(
         .map(|&(_, o)| block.outputs()[o].kind())
         .collect();
     while let Some(rec) = reader.next_record()? {
-        let before = engine.family.state();
         let row = engine.step(&rec).map_err(|e| *e)?;
         let values = engine.family.values(&row.output);
         for (k, &(column, o)) in compared.iter().enumerate() {
@@ -746,17 +836,24 @@ fn check_family<F: Adapter, R: Read>(
             .iter()
             .enumerate()
             .find(|&(k, &(_, o))| found[k] != values.as_slice()[o]);
+        let (outputs, state) = row.rules.unwrap_or_default();
         if let Some((_, &(column, o))) = differing {
-            let step = Step {
-                now: row.t,
-                last: row.last,
-                signals: row.signals,
-                preset: row.preset,
-                before,
-                after: engine.family.state(),
-                output: o,
+            let rules = outputs[o];
+            // What this row's own rules cover: those of every output and of the state (ticks
+            // and ET updates that continue every row are covered by the row's own).
+            let covered = outputs.iter().fold(state, |all, r| all.union(*r));
+            // The latest earlier row with a rule on the state this row does not cover: where
+            // the episode this row continues began (a start, a set, a row under R).
+            let earlier = acted
+                .iter()
+                .filter(|(set, _)| !set.is_subset(covered))
+                .max_by_key(|(_, line)| *line)
+                .map(|&(set, line)| (line, set));
+            let why = Why {
+                rules,
+                earlier,
+                explained,
             };
-            let why = engine.family.explain(&step);
             let shown = |values: &Outputs| -> Vec<(&'static str, Value)> {
                 compared
                     .iter()
@@ -799,6 +896,16 @@ fn check_family<F: Adapter, R: Read>(
             });
             break;
         }
+        // A row whose rules on the state all acted at the row before too only continues it
+        // (the ticks of a running time, ET following the clock): it is not recorded, so that
+        // the row where the episode began is the one named.
+        if !state.is_empty() && !state.is_subset(previous) {
+            match acted.iter_mut().find(|(set, _)| *set == state) {
+                Some(entry) => entry.1 = rec.line(),
+                None => acted.push((state, rec.line())),
+            }
+        }
+        previous = state;
     }
     Ok(report)
 }

@@ -4,14 +4,13 @@
 //! [`dispatch`] picks the family, the implementation and (IEC counters) the integer type from a
 //! [`BlockSpec`]; everything else is generic over [`Adapter`].
 //!
-//! Each family also classifies a step for `check` ([`Adapter::explain`]): from the block's state
-//! before and after the step it names the requirement that decides an output there. The
-//! semantics stay in the core: the classifier only reads the states the core reports.
+//! The rules that decided a step come from the core's references ([`Adapter::call_explained`],
+//! through [`Explains`]): the tool has no copy of the semantics.
 
 use std::fmt;
 use std::marker::PhantomData;
 
-use plc_timers::catalog::{Block, Kind, Port, PresetKind, ValueKind};
+use plc_timers::catalog::{Block, Kind, Port, PresetKind};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
     S5CounterRef, S5CounterState,
@@ -21,9 +20,8 @@ use plc_timers::counter::{
     CounterState,
 };
 use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{
-    ticks_between, S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef,
-};
+use plc_timers::rule::{Explained, RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
+use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 
 use super::error::{Location, TraceError};
@@ -127,6 +125,58 @@ impl Signals {
 
 // A port's bit must fit.
 const _: () = assert!(Port::ALL.len() <= 32);
+
+/// An implementation's explained call: the references give their rules
+/// (`call_explained`), the optimized forms none (they are proven equal to the reference, which
+/// is the one that explains).
+pub trait Explains<K, I, O> {
+    /// Whether [`Explains::explained`] gives the reference's rules.
+    const EXPLAINS: bool;
+    /// One call with the rules that decided it.
+    fn explained(&mut self, kind: K, now: CpuTime, input: I) -> Explained<O>;
+}
+
+/// A call's outputs without rules (the optimized forms).
+fn unexplained<O>(output: O) -> Explained<O> {
+    Explained {
+        output,
+        outputs: [RuleSet::EMPTY; RULE_OUTPUTS],
+        state: RuleSet::EMPTY,
+    }
+}
+
+/// Implements [`Explains`] for a reference (`$explains` true, through `call_explained`) or an
+/// optimized form (false, through `call`).
+macro_rules! explains {
+    ($([$($g:tt)*] $t:ty: $k:ty, $i:ty, $o:ty, $explains:literal, |$x:ident, $kind:ident, $now:ident, $input:ident| $body:expr;)*) => {
+        $(impl<$($g)*> Explains<$k, $i, $o> for $t {
+            const EXPLAINS: bool = $explains;
+            fn explained(&mut self, $kind: $k, $now: CpuTime, $input: $i) -> Explained<$o> {
+                let $x = self;
+                $body
+            }
+        })*
+    };
+}
+
+explains! {
+    [] S5TimerRef: S5Kind, S5Input, S5Output, true,
+        |t, kind, now, input| t.call_explained(kind, now, input);
+    [] S5Timer: S5Kind, S5Input, S5Output, false,
+        |t, kind, now, input| unexplained(t.call(kind, now, input));
+    [] IecTimerRef<u32>: IecKind, IecInput, IecOutput<u32>, true,
+        |t, kind, now, input| t.call_explained(kind, now, input);
+    [] IecTimer: IecKind, IecInput, IecOutput<u32>, false,
+        |t, kind, now, input| unexplained(t.call(kind, now, input));
+    [N: CounterInt] CounterRef<N>: CounterKind, CounterInput<N>, CounterOutput<N>, true,
+        |t, kind, _now, input| t.call_explained(kind, input);
+    [N: CounterInt] Counter<N>: CounterKind, CounterInput<N>, CounterOutput<N>, false,
+        |t, kind, _now, input| unexplained(t.call(kind, input));
+    [] S5CounterRef: S5CounterKind, S5CounterInput, S5CounterOutput, true,
+        |t, kind, _now, input| t.call_explained(kind, input);
+    [] S5Counter: S5CounterKind, S5CounterInput, S5CounterOutput, false,
+        |t, kind, _now, input| unexplained(t.call(kind, input));
+}
 
 /// Which implementation of a block to drive.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -399,41 +449,6 @@ pub fn block_names() -> String {
     names.join(", ")
 }
 
-/// Why an output has its value at a step: the requirements that decide it and what happened.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Why {
-    /// Requirement IDs (`spec/requirements/*.toml`), the deciding one first.
-    pub rules: Vec<&'static str>,
-    /// What happened at the step, in a few words.
-    pub what: String,
-}
-
-fn why(rules: &[&'static str], what: impl Into<String>) -> Why {
-    Why {
-        rules: rules.to_vec(),
-        what: what.into(),
-    }
-}
-
-/// One executed step, as [`Adapter::explain`] sees it.
-#[derive(Clone, Copy, Debug)]
-pub struct Step<P, S> {
-    /// The CPU time of the step (ms).
-    pub now: u64,
-    /// The CPU time of the previous step (0 before the first).
-    pub last: u64,
-    /// The boolean inputs.
-    pub signals: Signals,
-    /// The preset.
-    pub preset: P,
-    /// The state before the step.
-    pub before: S,
-    /// The state after the step.
-    pub after: S,
-    /// The catalog index of the output to explain.
-    pub output: usize,
-}
-
 /// A block family driven through its core interface (the catalog's family of the block is
 /// [`Block::family`]; this is the adapter that drives it).
 pub trait Adapter {
@@ -463,8 +478,17 @@ pub trait Adapter {
     /// Milliseconds per unit of the integer output while it runs (ET: 1, BI: the time base),
     /// `None` when it does not change with time (CV).
     fn ramp(&self, output: &Self::Output) -> Option<u64>;
-    /// The requirement that decides output `step.output` at this step.
-    fn explain(&self, step: &Step<Self::Preset, Self::State>) -> Why;
+    /// [`Adapter::call`], explained by the reference ([`Explained`]: the rules that decided
+    /// each output and acted on the state); the optimized forms give no rules.
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        preset: Self::Preset,
+    ) -> Explained<Self::Output>;
+    /// Whether [`Adapter::call_explained`] gives the reference's rules (the optimized forms
+    /// give none).
+    fn explains(&self) -> bool;
     /// The boolean inputs the adapter reads (of the family: TON has no R, which TONR's adapter
     /// reads).
     fn reads(&self) -> &'static [Port];
@@ -511,14 +535,6 @@ fn counter<N: CounterInt, V: Visit>(
     }
 }
 
-/// Whether output `index` of `block` is a boolean.
-fn is_bool(block: Block, index: usize) -> bool {
-    block
-        .outputs()
-        .get(index)
-        .is_some_and(|p| p.kind() == ValueKind::Bool)
-}
-
 // ---------------------------------------------------------------------------------------------
 // S5 timers
 
@@ -530,23 +546,19 @@ pub struct S5Adapter<T> {
 }
 
 impl<T: S5TimerOps> S5Adapter<T> {
+    /// The core's input struct of a row.
+    #[inline]
+    fn input(&self, signals: Signals, tv: S5Time) -> S5Input {
+        S5Input::new(signals.get(Port::S), signals.get(Port::R), tv)
+            .with_fr(signals.get(Port::Fr))
+    }
+
     fn new(block: Block, kind: S5Kind, timer: T) -> S5Adapter<T> {
         S5Adapter { timer, block, kind }
     }
 }
 
-/// The rule of each S5 timer kind's start and status.
-fn s5_kind_rule(kind: S5Kind) -> &'static str {
-    match kind {
-        S5Kind::SPulse => "SP-Q-01",
-        S5Kind::SPext => "SE-RUN-ON-01",
-        S5Kind::SOdt => "SD-Q-01",
-        S5Kind::SOdts => "SS-Q-01",
-        S5Kind::SOffdt => "SF-Q-01",
-    }
-}
-
-impl<T: S5TimerOps> Adapter for S5Adapter<T> {
+impl<T: S5TimerOps + Explains<S5Kind, S5Input, S5Output>> Adapter for S5Adapter<T> {
     type Preset = S5Time;
     type State = S5State;
     type Output = S5Output;
@@ -563,9 +575,18 @@ impl<T: S5TimerOps> Adapter for S5Adapter<T> {
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, tv: S5Time) -> S5Output {
-        let input = S5Input::new(signals.get(Port::S), signals.get(Port::R), tv)
-            .with_fr(signals.get(Port::Fr));
+        let input = self.input(signals, tv);
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, tv: S5Time) -> Explained<S5Output> {
+        let input = self.input(signals, tv);
+        self.timer
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        T::EXPLAINS
     }
 
     fn state(&self) -> S5State {
@@ -590,113 +611,6 @@ impl<T: S5TimerOps> Adapter for S5Adapter<T> {
     fn reads(&self) -> &'static [Port] {
         &[Port::S, Port::R, Port::Fr]
     }
-
-    fn explain(&self, st: &Step<S5Time, S5State>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let (s, r, fr) = (
-            st.signals.get(Port::S),
-            st.signals.get(Port::R),
-            st.signals.get(Port::Fr),
-        );
-        let kind = self.kind;
-        let kind_rule = s5_kind_rule(kind);
-        let fr_edge = fr && !b.fr_prev;
-        let s_memory = b.s_prev && !fr_edge;
-        let rising = s && !s_memory;
-        let falling = !s && s_memory;
-        let ticks = ticks_between(
-            CpuTime::from_millis(st.last),
-            CpuTime::from_millis(st.now),
-            b.base,
-        );
-        let zero = b.running && b.value == 0;
-        let ran_out = b.running && (zero || ticks >= u64::from(b.value));
-        let start = if kind.starts_on_falling_edge() {
-            falling
-        } else {
-            rising
-        };
-        let status = is_bool(self.block, st.output);
-        let mut w = if r {
-            why(
-                &["S5TMR-R-01"],
-                "R = 1: the timer is reset (stopped, BI = 0, Q = 0)",
-            )
-        } else if start && fr_edge && b.s_prev {
-            why(
-                &["S5TMR-FR-01", kind_rule],
-                format!(
-                    "FR rises with S = {}: the timer restarts with TV = {}",
-                    u8::from(s),
-                    st.preset
-                ),
-            )
-        } else if start {
-            why(
-                &[kind_rule, "S5TMR-EDGE-01"],
-                format!(
-                    "S {}: {} starts with TV = {} ({} units of {} ms)",
-                    if s { "rises" } else { "falls" },
-                    kind.name(),
-                    st.preset,
-                    st.preset.units(),
-                    st.preset.base().millis()
-                ),
-            )
-        } else if ran_out {
-            let q = u8::from(a.q);
-            if zero {
-                why(
-                    &["S5TMR-ZERO-01"],
-                    format!("the timer started with value 0 is found run out: Q = {q}"),
-                )
-            } else {
-                why(
-                    &["S5TMR-EXPIRE-01", "S5TMR-TICK-01"],
-                    format!(
-                        "{ticks} tick(s) of the {} ms base since {} ms: the time runs out, Q = {q}",
-                        b.base.millis(),
-                        st.last
-                    ),
-                )
-            }
-        } else if kind == S5Kind::SOffdt && rising {
-            why(&["SF-Q-01"], "S rises: Q = 1 and a running time stops")
-        } else if matches!(kind, S5Kind::SPulse | S5Kind::SOdt) && !s && (b.running || b.q) {
-            why(
-                &["S5TMR-STOP-01", kind_rule],
-                "S = 0 stops the timer: Q = 0, the remaining value is kept",
-            )
-        } else if b.running && ticks > 0 && !status {
-            why(
-                &["S5TMR-TICK-01"],
-                format!(
-                    "{ticks} tick(s) of the {} ms base since {} ms: BI {} -> {}",
-                    b.base.millis(),
-                    st.last,
-                    b.value,
-                    a.value
-                ),
-            )
-        } else if s && s_memory && !b.running {
-            why(
-                &["S5TMR-EDGE-01", kind_rule],
-                "S held at 1: no edge, so nothing starts",
-            )
-        } else {
-            why(
-                &[kind_rule],
-                format!(
-                    "no start, tick or reset at this call ({}running)",
-                    if a.running { "" } else { "not " }
-                ),
-            )
-        };
-        if self.block.outputs()[st.output].kind() == ValueKind::Word {
-            w.rules.push("S5TMR-RANGE-01");
-        }
-        w
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -710,21 +624,18 @@ pub struct IecAdapter<T> {
 }
 
 impl<T: IecTimerOps<u32>> IecAdapter<T> {
+    /// The core's input struct of a row.
+    #[inline]
+    fn input(&self, signals: Signals, pt: Time) -> IecInput {
+        IecInput::new(signals.get(Port::In), pt).with_reset(signals.get(Port::R))
+    }
+
     fn new(block: Block, kind: IecKind, timer: T) -> IecAdapter<T> {
         IecAdapter { timer, block, kind }
     }
 }
 
-fn iec_kind_rule(kind: IecKind) -> &'static str {
-    match kind {
-        IecKind::Tp => "TP-IN-01",
-        IecKind::Ton => "TON-IN-01",
-        IecKind::Tof => "TOF-IN-01",
-        IecKind::Tonr => "TONR-IN-01",
-    }
-}
-
-impl<T: IecTimerOps<u32>> Adapter for IecAdapter<T> {
+impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Adapter for IecAdapter<T> {
     type Preset = Time;
     type State = IecState<u32>;
     type Output = IecOutput<u32>;
@@ -741,8 +652,18 @@ impl<T: IecTimerOps<u32>> Adapter for IecAdapter<T> {
 
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, pt: Time) -> IecOutput<u32> {
-        let input = IecInput::new(signals.get(Port::In), pt).with_reset(signals.get(Port::R));
+        let input = self.input(signals, pt);
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, pt: Time) -> Explained<IecOutput<u32>> {
+        let input = self.input(signals, pt);
+        self.timer
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        T::EXPLAINS
     }
 
     fn state(&self) -> IecState<u32> {
@@ -761,123 +682,6 @@ impl<T: IecTimerOps<u32>> Adapter for IecAdapter<T> {
     fn reads(&self) -> &'static [Port] {
         &[Port::In, Port::R]
     }
-
-    fn explain(&self, st: &Step<Time, IecState<u32>>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let kind = self.kind;
-        let input = st.signals.get(Port::In);
-        let reset = st.signals.get(Port::R);
-        let pt = st.preset.clamp_negative();
-        let gap = st.now.saturating_sub(st.last);
-        let rising = input && !b.input;
-        let started = match kind {
-            IecKind::Tp => rising && !(b.running && a.running && a.start == b.start),
-            IecKind::Ton => rising,
-            IecKind::Tof => !input && b.input,
-            IecKind::Tonr => input && !b.running && !b.q,
-        };
-        let kind_rule = iec_kind_rule(kind);
-        let latched = b.running && !started && pt != b.pt;
-        let status = is_bool(self.block, st.output);
-        if kind == IecKind::Tonr && reset {
-            return why(&["TONR-R-01"], "R = 1 resets ET and Q and stops the timer");
-        }
-        if latched {
-            return why(
-                &["IEC-PT-LATCH-01"],
-                format!(
-                    "PT is now {pt} ms, but the running timer keeps the PT latched at its start ({} ms)",
-                    b.pt
-                ),
-            );
-        }
-        if gap >= 1 << 31 && (b.running || a.running) && !started {
-            return why(
-                &["IEC-WRAP-01"],
-                format!(
-                    "{gap} ms since the last call: elapsed = now - START modulo 2^32 = {} ms",
-                    (st.now as u32).wrapping_sub(b.start)
-                ),
-            );
-        }
-        if started && pt == 0 {
-            return why(
-                &["IEC-PT0-01", kind_rule],
-                "PT = 0: the starting call itself finds ET >= PT",
-            );
-        }
-        if kind == IecKind::Tp && started && b.running {
-            return why(
-                &["TP-RETRIGGER-01"],
-                "the pulse runs out in this call and the rising IN starts a new one",
-            );
-        }
-        if started {
-            let rule = if kind == IecKind::Tonr {
-                "TONR-RESUME-01"
-            } else {
-                "IEC-START-01"
-            };
-            return why(
-                &[rule, kind_rule],
-                format!(
-                    "IN {}: the timer starts, START = {} ms, PT = {pt} ms latched",
-                    if input { "rises" } else { "falls" },
-                    a.start
-                ),
-            );
-        }
-        if b.running && !a.running && a.et == a.pt && input == b.input {
-            return why(
-                &["IEC-EXPIRY-01"],
-                format!(
-                    "ET reaches PT = {} ms in this call: ET stays at PT, Q = {}",
-                    a.pt,
-                    u8::from(a.q)
-                ),
-            );
-        }
-        if kind == IecKind::Tp && rising {
-            return why(
-                &["TP-IN-01"],
-                "a rising IN while the pulse runs has no effect",
-            );
-        }
-        if a.running {
-            let what = if status {
-                format!(
-                    "ET = {} ms < PT = {} ms: Q keeps its value while running",
-                    a.et, a.pt
-                )
-            } else {
-                format!("running: ET = now - START = {} ms", a.et)
-            };
-            let rule = if status {
-                "IEC-EXPIRY-01"
-            } else {
-                "IEC-START-01"
-            };
-            return why(&[rule], what);
-        }
-        if a.q != b.q || a.et != b.et {
-            return why(
-                &[kind_rule],
-                format!(
-                    "IN = {}: Q = {}, ET = {} ms",
-                    u8::from(input),
-                    u8::from(a.q),
-                    a.et
-                ),
-            );
-        }
-        why(
-            &[kind_rule, "IEC-EDGE-01"],
-            format!(
-                "IN = {}, no starting edge: Q and ET unchanged",
-                u8::from(input)
-            ),
-        )
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -892,6 +696,14 @@ pub struct CounterAdapter<N, C> {
 }
 
 impl<N: CounterInt, C: CounterOps<N>> CounterAdapter<N, C> {
+    /// The core's input struct of a row.
+    #[inline]
+    fn input(&self, signals: Signals, pv: N) -> CounterInput<N> {
+        CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_r(signals.get(Port::R))
+            .with_ld(signals.get(Port::Ld))
+    }
+
     fn new(block: Block, kind: CounterKind, counter: C) -> CounterAdapter<N, C> {
         CounterAdapter {
             counter,
@@ -912,7 +724,7 @@ fn int_preset_error<N: CounterInt>() -> String {
     )
 }
 
-impl<N: CounterInt, C: CounterOps<N>> Adapter for CounterAdapter<N, C> {
+impl<N: CounterInt, C: CounterOps<N> + Explains<CounterKind, CounterInput<N>, CounterOutput<N>>> Adapter for CounterAdapter<N, C> {
     type Preset = N;
     type State = CounterState<N>;
     type Output = CounterOutput<N>;
@@ -943,10 +755,18 @@ impl<N: CounterInt, C: CounterOps<N>> Adapter for CounterAdapter<N, C> {
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: N) -> CounterOutput<N> {
-        let input = CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
-            .with_r(signals.get(Port::R))
-            .with_ld(signals.get(Port::Ld));
+        let input = self.input(signals, pv);
         self.counter.call(self.kind, input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, pv: N) -> Explained<CounterOutput<N>> {
+        let input = self.input(signals, pv);
+        self.counter
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        C::EXPLAINS
     }
 
     fn state(&self) -> CounterState<N> {
@@ -970,62 +790,6 @@ impl<N: CounterInt, C: CounterOps<N>> Adapter for CounterAdapter<N, C> {
     fn reads(&self) -> &'static [Port] {
         &[Port::Cu, Port::Cd, Port::R, Port::Ld]
     }
-
-    fn explain(&self, st: &Step<N, CounterState<N>>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let g = |pin| st.signals.get(pin);
-        let (cu, cd, r, ld) = (g(Port::Cu), g(Port::Cd), g(Port::R), g(Port::Ld));
-        let up = cu && !b.cu_prev;
-        let down = cd && !b.cd_prev;
-        let (bcv, acv, pv) = (b.cv.to_i128(), a.cv.to_i128(), st.preset.to_i128());
-        let cv = if r {
-            why(
-                &["CNT-PRIO-01"],
-                "R = 1: CV = 0 (R before LD before counting)",
-            )
-        } else if ld {
-            why(&["CNT-PRIO-01"], format!("LD = 1: CV = PV = {pv}"))
-        } else if up && down {
-            why(&["CNT-SIMUL-01"], "CU and CD rise together: CV unchanged")
-        } else if (up || down) && acv == bcv {
-            why(
-                &["CNT-SAT-01", "CNT-EDGE-01"],
-                format!("CV stays at the {} limit {bcv}", N::NAME),
-            )
-        } else if up || down {
-            why(
-                &["CNT-EDGE-01"],
-                format!(
-                    "{} rises: CV {bcv} -> {acv}",
-                    if up { Port::Cu } else { Port::Cd }.name()
-                ),
-            )
-        } else {
-            why(
-                &["CNT-EDGE-01"],
-                "no rising CU or CD (a level held at 1 does not count): CV unchanged",
-            )
-        };
-        if !is_bool(self.block, st.output) {
-            return cv;
-        }
-        let qd =
-            self.kind == CounterKind::Ctd || (self.kind == CounterKind::Ctud && st.output == 1);
-        let what = if qd {
-            format!("QD = CV <= 0 with CV = {acv}")
-        } else {
-            format!("QU = CV >= PV with CV = {acv}, PV = {pv}")
-        };
-        let mut rules = vec!["CNT-Q-01"];
-        if acv != bcv {
-            rules.extend(cv.rules);
-            return Why {
-                rules,
-                what: format!("{what}; {}", cv.what),
-            };
-        }
-        Why { rules, what }
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1039,6 +803,15 @@ pub struct S5CounterAdapter<C> {
 }
 
 impl<C: S5CounterOps> S5CounterAdapter<C> {
+    /// The core's input struct of a row.
+    #[inline]
+    fn input(&self, signals: Signals, pv: CounterPreset) -> S5CounterInput {
+        S5CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_s(signals.get(Port::S))
+            .with_r(signals.get(Port::R))
+            .with_fr(signals.get(Port::Fr))
+    }
+
     fn new(block: Block, kind: S5CounterKind, counter: C) -> S5CounterAdapter<C> {
         S5CounterAdapter {
             counter,
@@ -1048,7 +821,7 @@ impl<C: S5CounterOps> S5CounterAdapter<C> {
     }
 }
 
-impl<C: S5CounterOps> Adapter for S5CounterAdapter<C> {
+impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>> Adapter for S5CounterAdapter<C> {
     type Preset = CounterPreset;
     type State = S5CounterState;
     type Output = S5CounterOutput;
@@ -1065,11 +838,18 @@ impl<C: S5CounterOps> Adapter for S5CounterAdapter<C> {
 
     #[inline]
     fn call(&mut self, _now: u64, signals: Signals, pv: CounterPreset) -> S5CounterOutput {
-        let input = S5CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
-            .with_s(signals.get(Port::S))
-            .with_r(signals.get(Port::R))
-            .with_fr(signals.get(Port::Fr));
+        let input = self.input(signals, pv);
         self.counter.call(self.kind, input)
+    }
+
+    fn call_explained(&mut self, now: u64, signals: Signals, pv: CounterPreset) -> Explained<S5CounterOutput> {
+        let input = self.input(signals, pv);
+        self.counter
+            .explained(self.kind, CpuTime::from_millis(now), input)
+    }
+
+    fn explains(&self) -> bool {
+        C::EXPLAINS
     }
 
     fn state(&self) -> S5CounterState {
@@ -1091,87 +871,6 @@ impl<C: S5CounterOps> Adapter for S5CounterAdapter<C> {
 
     fn reads(&self) -> &'static [Port] {
         &[Port::Cu, Port::Cd, Port::S, Port::R, Port::Fr]
-    }
-
-    fn explain(&self, st: &Step<CounterPreset, S5CounterState>) -> Why {
-        let (b, a) = (&st.before, &st.after);
-        let g = |pin| st.signals.get(pin);
-        let (cu, cd, s, r, fr) = (
-            g(Port::Cu),
-            g(Port::Cd),
-            g(Port::S),
-            g(Port::R),
-            g(Port::Fr),
-        );
-        let fr_edge = fr && !b.fr_prev;
-        // An FR edge clears the edge memories before the operations see them.
-        let memory = |m: bool| m && !fr_edge;
-        let up = self.kind.counts_up() && cu && !memory(b.cu_prev);
-        let down = self.kind.counts_down() && cd && !memory(b.cd_prev);
-        let set = s && !memory(b.s_prev);
-        let by_fr = fr_edge && ((up && b.cu_prev) || (down && b.cd_prev) || (set && b.s_prev));
-        let cv = if r {
-            why(
-                &["SC-PRIO-01"],
-                "R = 1: CV = 0 (R last in FR, CU, CD, S, R)",
-            )
-        } else if set {
-            let mut rules = vec!["SC-SET-01"];
-            if by_fr {
-                rules.push("SC-FR-01");
-            }
-            if up || down {
-                rules.push("SC-PRIO-01");
-            }
-            Why {
-                rules,
-                what: format!("S rises: CV = PV = {}", st.preset.value()),
-            }
-        } else if up && down {
-            why(
-                &["SC-SIMUL-01"],
-                format!("CU and CD rise together: CV {} -> {}", b.cv, a.cv),
-            )
-        } else if by_fr {
-            why(
-                &["SC-FR-01", "SC-EDGE-01"],
-                format!(
-                    "FR rises: the held count input counts again, CV {} -> {}",
-                    b.cv, a.cv
-                ),
-            )
-        } else if (up || down) && a.cv == b.cv {
-            why(&["SC-SAT-01"], format!("CV stays at {}", b.cv))
-        } else if up || down {
-            why(
-                &["SC-EDGE-01"],
-                format!(
-                    "{} rises: CV {} -> {}",
-                    if up { Port::Cu } else { Port::Cd }.name(),
-                    b.cv,
-                    a.cv
-                ),
-            )
-        } else {
-            why(
-                &["SC-EDGE-01"],
-                "no rising CU, CD or S (a level held at 1 acts once): CV unchanged",
-            )
-        };
-        let (rule, what) = match self.block.outputs()[st.output].kind() {
-            ValueKind::Bool => ("SC-Q-01", format!("Q = CV != 0 with CV = {}", a.cv)),
-            ValueKind::Word => ("SC-RANGE-01", format!("CV_BCD is CV = {} in BCD", a.cv)),
-            _ => return cv,
-        };
-        let mut rules = vec![rule];
-        if a.cv != b.cv {
-            rules.extend(cv.rules);
-            return Why {
-                rules,
-                what: format!("{what}; {}", cv.what),
-            };
-        }
-        Why { rules, what }
     }
 }
 

@@ -3,7 +3,6 @@
 //! - [`reader`]: a strict CSV reader that knows each record's line.
 //! - [`family`]: the generic adapter between a row and a block family, and [`dispatch`].
 //! - [`engine`]: the header resolved against the catalog; [`run`], [`check`], [`observe`].
-//! - [`rules`]: the requirement texts that `check` quotes.
 //! - [`diagram`]: timing diagrams (SVG), streamed; [`vcd`]: VCD export.
 //! - [`examples`]: the example traces of `examples/traces/`; [`vectors`]: test vectors.
 //! - [`error`]: errors that name the line and column.
@@ -14,14 +13,14 @@ pub mod error;
 pub mod examples;
 pub mod family;
 pub mod reader;
-pub mod rules;
 pub mod vcd;
 pub mod vectors;
 
 pub use engine::{
-    check, observe, run, CheckReport, Columns, ContextRow, Difference, Observation, Observer,
+    check, observe, run, run_explained, CheckReport, Columns, ContextRow, Difference, Observation,
+    Observer, Why,
 };
 pub use error::{Error, Location, TraceError};
 pub use family::{
-    dispatch, parse_block, BlockSpec, Implementation, IntType, PresetValue, Signals, Value, Why,
+    dispatch, parse_block, BlockSpec, Implementation, IntType, PresetValue, Signals, Value,
 };

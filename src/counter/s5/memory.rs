@@ -1,8 +1,12 @@
 //! A counter memory area of S5 counters (`C 0` .. `C N-1`), with the STL operations on it.
 
 use super::word::S5Counter;
-use super::{CounterPreset, S5CounterInput, S5CounterKind, S5CounterOutput, S5CounterState};
+use super::{
+    CounterPreset, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput, S5CounterRef,
+    S5CounterState,
+};
 use crate::operand::{self, NoSuchOperand, Operand};
+use crate::rule::{Explained, Explanation};
 
 /// A counter memory area of `N` S5 counters (256 by default).
 ///
@@ -156,5 +160,134 @@ impl<const N: usize> CounterMemory<N> {
         let w = self.word(index)?;
         *w = w.execute(kind, input);
         Ok(w.output())
+    }
+
+    /// Runs `op` on the reference counter in the state of counter `index`, stores the state it
+    /// leaves, and gives the outputs with the rules `op` recorded: the reference path of the
+    /// explained operations (the words have no recorder).
+    fn explained(
+        &mut self,
+        index: usize,
+        op: impl FnOnce(&mut S5CounterRef, &mut Explanation),
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        let w = self.word(index)?;
+        let mut rec = Explanation::default();
+        // A word always holds a valid state, and the reference keeps it valid (SC-RANGE-01).
+        if let Some(mut counter) = S5CounterRef::from_state(w.state()) {
+            op(&mut counter, &mut rec);
+            if let Some(new) = S5Counter::from_state(counter.state()) {
+                *w = new;
+            }
+        }
+        Ok(rec.finish(w.output()))
+    }
+
+    /// [`CounterMemory::call`], explained through the reference
+    /// ([`S5CounterRef::call_explained`]): the same outputs and words, with the rules that
+    /// decided them.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, S5CounterInput, S5CounterKind};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// let e = counters.call_explained(0, S5CounterKind::SCd, S5CounterInput { cd: true, ..Default::default() })?;
+    /// assert!(e.outputs[1].contains(Rule::SC_SAT_01)); // CV: 0 stays 0
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn call_explained(
+        &mut self,
+        index: usize,
+        kind: S5CounterKind,
+        input: S5CounterInput,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| {
+            c.call_rec(kind, input, rec);
+        })
+    }
+
+    /// [`CounterMemory::fr`] (`FR C n`), explained.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// assert!(counters.fr_explained(0, true)?.state.contains(Rule::SC_FR_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn fr_explained(
+        &mut self,
+        index: usize,
+        rlo: bool,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| c.enable_rec(rlo, rec))
+    }
+
+    /// [`CounterMemory::cu`] (`CU C n`), explained.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// assert!(counters.cu_explained(0, true)?.state.contains(Rule::SC_EDGE_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn cu_explained(
+        &mut self,
+        index: usize,
+        rlo: bool,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| c.count_up_rec(rlo, rec))
+    }
+
+    /// [`CounterMemory::cd`] (`CD C n`), explained.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// assert!(counters.cd_explained(0, true)?.state.contains(Rule::SC_EDGE_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn cd_explained(
+        &mut self,
+        index: usize,
+        rlo: bool,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| c.count_down_rec(rlo, rec))
+    }
+
+    /// [`CounterMemory::set`] (`S C n`), explained.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// assert!(counters.set_explained(0, true, CounterPreset::new(3).expect("0..=999"))?.state.contains(Rule::SC_SET_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn set_explained(
+        &mut self,
+        index: usize,
+        rlo: bool,
+        pv: CounterPreset,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| c.set_rec(rlo, pv, rec))
+    }
+
+    /// [`CounterMemory::reset`] (`R C n`), explained.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// use plc_timers::rule::Rule;
+    /// let mut counters = CounterMemory::<1>::new();
+    /// assert!(counters.reset_explained(0, true)?.state.contains(Rule::SC_PRIO_01));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn reset_explained(
+        &mut self,
+        index: usize,
+        rlo: bool,
+    ) -> Result<Explained<S5CounterOutput>, NoSuchOperand> {
+        self.explained(index, |c, rec| c.reset_rec(rlo, rec))
     }
 }
