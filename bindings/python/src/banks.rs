@@ -263,7 +263,9 @@ impl PyTonBank {
         self.banks
             .get(i / CHUNK)
             .filter(|_| i < self.n)
-            .and_then(|b| b.output(i % CHUNK))
+            // `i % CHUNK` is always a timer of the chunk: the bound that matters is `self.n`,
+            // whose message says what exists in this bank.
+            .and_then(|b| b.output(i % CHUNK).ok())
             .map(Into::into)
             .ok_or_else(|| {
                 pyo3::exceptions::PyIndexError::new_err(format!(

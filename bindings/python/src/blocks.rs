@@ -4,7 +4,7 @@
 
 use std::marker::PhantomData;
 
-use plc_timers::catalog::{Block, Kind};
+use plc_timers::catalog::{Block, Kind, Port};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
     S5CounterRef,
@@ -166,11 +166,12 @@ pub fn py_bool(b: bool) -> &'static str {
 
 /// Rejects a true input that `block` does not have (e.g. CD of CTU): the core would take it as
 /// 0, which is not what the caller meant.
-fn has_input(block: Block, name: &str, value: bool) -> PyResult<()> {
-    if value && block.input_index(name).is_none() {
-        let inputs: Vec<&str> = block.inputs().iter().map(|p| p.name).collect();
+fn has_input(block: Block, port: Port, value: bool) -> PyResult<()> {
+    if value && !block.has_input(port) {
+        let inputs: Vec<&str> = block.inputs().iter().map(|p| p.name()).collect();
         return Err(PyValueError::new_err(format!(
-            "{block} has no {name} input; its inputs are {}",
+            "{block} has no {} input; its inputs are {}",
+            port.name(),
             inputs.join(", ")
         )));
     }
@@ -184,7 +185,7 @@ fn preset<T: Copy>(
     default: Option<T>,
     read: impl FnOnce(&Bound<'_, PyAny>, &str) -> PyResult<T>,
 ) -> PyResult<T> {
-    let name = block.preset().map_or("preset", |p| p.option);
+    let name = block.preset().option;
     match (given, default) {
         (Some(obj), _) => read(obj, name),
         (None, Some(v)) => Ok(v),
@@ -366,7 +367,7 @@ impl IecBlock {
         r: bool,
         pt: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyIecOutput> {
-        has_input(self.block, "R", r)?;
+        has_input(self.block, Port::R, r)?;
         let pt = preset(self.block, pt, self.pt, args::time)?;
         let now = self.at(now)?;
         let input = IecInput::new(input, pt).with_reset(r);
@@ -603,8 +604,8 @@ impl CounterBlock {
         ld: bool,
         pv: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyCounterOutput> {
-        for (name, v) in [("CU", cu), ("CD", cd), ("R", r), ("LD", ld)] {
-            has_input(self.block, name, v)?;
+        for (port, v) in [(Port::Cu, cu), (Port::Cd, cd), (Port::R, r), (Port::Ld, ld)] {
+            has_input(self.block, port, v)?;
         }
         let t = self.int_type;
         let pv = preset(self.block, pv, self.pv, |o, what| counter_pv(o, t, what))?;
@@ -737,8 +738,8 @@ impl S5CounterBlock {
         fr: bool,
         pv: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyS5CounterOutput> {
-        for (name, v) in [("CU", cu), ("CD", cd)] {
-            has_input(self.block, name, v)?;
+        for (port, v) in [(Port::Cu, cu), (Port::Cd, cd)] {
+            has_input(self.block, port, v)?;
         }
         // PV matters only when S sets the counter; a call without it needs none.
         let pv = match (pv, self.pv) {

@@ -1,7 +1,7 @@
 //! The S5 timer and counter memory areas (`T 0` … and `Z/C 0` …) with their STL operations.
 //! The core's areas are const-generic; an area here has one of the sizes S7-300/400 CPUs had.
 
-use plc_timers::catalog::{Family, Kind};
+use plc_timers::catalog::{Family, Kind, Port};
 use plc_timers::counter::s5::{CounterMemory, S5CounterInput, S5CounterKind};
 use plc_timers::s5::{S5Input, S5Kind, TimerMemory};
 use plc_timers::time::{CpuTime, TimeBase};
@@ -347,10 +347,11 @@ impl PyCounterMemory {
                 )))
             }
         };
-        for (name, v) in [("CU", cu), ("CD", cd)] {
-            if v && block.input_index(name).is_none() {
+        for (port, v) in [(Port::Cu, cu), (Port::Cd, cd)] {
+            if v && !block.has_input(port) {
                 return Err(PyValueError::new_err(format!(
-                    "{block} has no {name} input; use S_CUD to count both ways"
+                    "{block} has no {} input; use S_CUD to count both ways",
+                    port.name()
                 )));
             }
         }

@@ -8,8 +8,9 @@ use std::io::Cursor;
 
 use plc_timers::catalog::{Block, Kind, ValueKind};
 use plc_timers_cli::trace::engine::parse_value;
+use plc_timers_cli::trace::error::show;
 use plc_timers_cli::trace::{
-    self as engine, BlockSpec, Error, Implementation, Location, PresetOption, Value,
+    self as engine, BlockSpec, Error, Implementation, Location, PresetValue, Value,
 };
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
@@ -284,10 +285,10 @@ fn csv_of(
     Ok(out)
 }
 
-/// The block spec and the presets as the command line would give them.
+/// The block spec and the preset, read as the command line reads its options.
 struct Request {
     spec: BlockSpec,
-    presets: Vec<(&'static str, String)>,
+    preset: Option<PresetValue>,
 }
 
 impl Request {
@@ -311,18 +312,43 @@ impl Request {
         } else {
             Implementation::Reference
         });
-        let mut presets = Vec::new();
+        let mut preset = None;
         for (name, given) in [("tv", tv), ("pt", pt), ("pv", pv)] {
             if let Some(obj) = given {
-                presets.push((name, preset_text(py, obj, name)?));
+                let text = preset_text(py, obj, name)?;
+                preset = Some(preset_value(spec, name, &text).map_err(|e| engine_error(py, e))?);
             }
         }
-        Ok(Request { spec, presets })
+        Ok(Request { spec, preset })
     }
+}
 
-    fn options(&self) -> Vec<PresetOption<'_>> {
-        self.presets.iter().map(|(n, v)| (*n, v.as_str())).collect()
+/// The preset keyword `name` given as `text`, read for the block of `spec` as the command
+/// line's parser reads its preset option: a keyword the block does not take is refused with
+/// the one it does take, and the value is read as the block's preset cell is.
+fn preset_value(
+    spec: BlockSpec,
+    name: &'static str,
+    text: &str,
+) -> Result<PresetValue, engine::TraceError> {
+    let block = spec.block;
+    let preset = block.preset();
+    if name != preset.option {
+        return Err(engine::TraceError::new(
+            Location::Command,
+            format!(
+                "option --{name} does not apply to {block}; its preset {} is given with --{}",
+                preset.port.name(),
+                preset.option
+            ),
+        ));
     }
+    PresetValue::parse(spec, text).map_err(|e| {
+        engine::TraceError::new(
+            Location::Option(preset.option),
+            format!("`{}`: {e}", show(text.as_bytes())),
+        )
+    })
 }
 
 /// A preset keyword as the command line's option text.
@@ -417,7 +443,7 @@ fn run(
     let mut out = Vec::with_capacity(csv.len() * 2);
     let result = engine::run(
         request.spec,
-        &request.options(),
+        request.preset,
         Cursor::new(csv.as_bytes()),
         &mut out,
     );
@@ -437,13 +463,13 @@ fn run(
         let mut values = Vec::with_capacity(ports.len());
         for port in ports.iter().rev() {
             let cell = fields.next().unwrap_or_default();
-            let value = parse_value(port.kind, cell.as_bytes()).ok_or_else(|| {
+            let value = parse_value(port.kind(), cell.as_bytes()).ok_or_else(|| {
                 PyRuntimeError::new_err(format!(
                     "the engine wrote `{cell}` for {}; this is a bug of plc-timers",
-                    port.name
+                    port.name()
                 ))
             })?;
-            values.push((port.name, value));
+            values.push((port.name(), value));
         }
         for (name, value) in values.into_iter().rev() {
             dict.set_item(name, py_value(py, value)?)?;
@@ -529,7 +555,7 @@ fn check(
         .map(|o| o.iter().map(String::as_str).collect());
     let report = engine::check(
         request.spec,
-        &request.options(),
+        request.preset,
         names.as_deref(),
         Cursor::new(csv.as_bytes()),
     )
@@ -542,8 +568,8 @@ fn check(
         .block
         .outputs()
         .iter()
-        .find(|p| p.name == d.output)
-        .map_or(ValueKind::Int, |p| p.kind);
+        .find(|p| p.name() == d.output)
+        .map_or(ValueKind::Int, |p| p.kind());
     // The trace's cell was read as a value of this kind by the engine; read it back so.
     let actual = match parse_value(kind, d.found.as_bytes()) {
         Some(v) => py_value(py, v)?,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import subprocess
 from pathlib import Path
-from typing import Dict, List, Union
+from typing import Any, Dict, List, Union
 
 import plc_timers
 import pytest
@@ -136,3 +136,34 @@ def test_check_message_is_the_command_s(cli: Path, tmp_path: Path) -> None:
     assert done.returncode == 1
     assert done.stdout == d.message
     assert str(d) == d.message
+
+
+@pytest.mark.parametrize(
+    ("block", "keyword", "value", "option"),
+    [
+        ("TON", "tv", "S5T#1S", None),  # a preset keyword the block does not take
+        ("S_CU", "pt", "T#1S", None),
+        ("TON", "pt", "T#1.5S", "pt"),  # the block's keyword, a value it refuses
+        ("CTU", "pv", "70000", "pv"),
+        ("S_ODT", "tv", "S5T#10000S", "tv"),
+    ],
+)
+def test_preset_keyword_errors_are_the_command_s(
+    cli: Path, tmp_path: Path, block: str, keyword: str, value: str, option: Union[str, None]
+) -> None:
+    """A preset keyword is read as the command line's parser reads its option: the same text,
+    before any row is read (the trace below is valid)."""
+    columns = {"TON": ["t_ms", "IN"], "S_CU": ["CU"], "CTU": ["CU"], "S_ODT": ["t_ms", "S"]}[block]
+    presets: Dict[str, Any] = {keyword: value}
+    with pytest.raises(plc_timers.TraceError) as e:
+        plc_timers.run(block, [dict.fromkeys(columns, 0)], **presets)
+    assert e.value.option == option
+    trace = tmp_path / "trace.csv"
+    trace.write_text(",".join(columns) + "\n" + ",".join("0" for _ in columns) + "\n")
+    done = subprocess.run(
+        [str(cli), "run", block, f"--{keyword}", value, str(trace)],
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode != 0
+    assert done.stderr.splitlines()[0] == f"error: {e.value}"
