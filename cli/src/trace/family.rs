@@ -877,6 +877,7 @@ impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use plc_timers::catalog::ValueKind;
 
     /// `with` chooses the implementation and keeps the block and type.
     #[test]
