@@ -410,7 +410,7 @@ pub fn prop_sequence_equivalence(kind: S5Kind, steps: &[(u64, S5Input)]) {
             (Ok(a.q), Ok(a.bi), Ok(a.bcd)),
             "S5-EQUIV-02 STL at t = {t:?}"
         );
-        assert_eq!(stl.words(), area.words(), "S5-EQUIV-02 STL state");
+        assert!(stl.words().eq(area.words()), "S5-EQUIV-02 STL state");
     }
 }
 
@@ -669,7 +669,7 @@ pub fn run(imp: S5Impl, c: S5Case) -> (S5State, S5Output) {
             ];
             assert_eq!(ops, [Ok(()); 3], "timer 1 exists");
             assert_eq!(
-                area.words()[0],
+                area.words().next().expect("T 0"),
                 other,
                 "S5-AREA-01: T 0 of another base untouched"
             );
@@ -1210,12 +1210,12 @@ fn exhaustive_s5_rules() {
 }
 
 /// The bolero harness of every S5 rule: random cases under `cargo test`, a proof over every
-/// kind, valid state, tick count and input under Kani. `#[kani::unwind(17)]`: the longest loops
-/// are the area tick's for one tick (`TimerWord::tick_once_all` takes the area's words in groups
-/// of 16, the last ones on a padded copy: 16 iterations per loop) and its exit; the others are
+/// kind, valid state, tick count and input under Kani. `#[kani::unwind(33)]`: the longest loops
+/// are the area tick's for one tick (`TimerWord::tick_once_cells` takes the area's cells in
+/// groups of 32, the last ones on a padded copy: 32 iterations per loop) and its exit; the others are
 /// shorter (the loop over `IMPLS`, 3 under Kani; the area's 2 words for more than one tick).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_s5_rules() {
     bolero::check!()
         .with_type::<S5Case>()
@@ -1253,11 +1253,11 @@ fn kani_cell_word() {
         });
 }
 
-/// S5-AREA-01 on a four-timer area: `#[kani::unwind(17)]` covers the one-tick path's loops over
-/// a padded group of 16 words (the area's 4 words are copied into one), the loop over the 4 words
+/// S5-AREA-01 on a four-timer area: `#[kani::unwind(33)]` covers the one-tick path's loops over
+/// a padded group of 32 cells (the area's 4 cells are copied into one), the loop over the 4 words
 /// for more ticks, and the check's loop over the 4 timers, each with its exit.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_area_tick() {
     bolero::check!()
         .with_type::<([S5State; 4], TimeBase, u64)>()
@@ -1333,12 +1333,12 @@ pub fn prop_advance_to(states: [S5State; 3], from: u32, dt: u32) {
     }
 }
 
-/// `advance_to` over three timers: `#[kani::unwind(17)]` covers its loop over the 4 time bases
-/// (`TimeBase::ALL`), the one-tick path's loops over a padded group of 16 words, the loop over
-/// the 3 words for more ticks, and the check's loop over the 3 timers, each with its exit (at
-/// most 16 + 1).
+/// `advance_to` over three timers: `#[kani::unwind(33)]` covers its loop over the 4 time bases
+/// (`TimeBase::ALL`), the one-tick path's loops over a padded group of 32 cells, the loop over
+/// the 3 cells for more ticks, and the check's loop over the 3 timers, each with its exit (at
+/// most 32 + 1).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_advance_to() {
     bolero::check!()
         .with_type::<([S5State; 3], u32, u32)>()
@@ -1348,11 +1348,11 @@ fn kani_advance_to() {
 
 /// S5-EQUIV-02: every sequence of three executions from power-up (any inputs and TVs, time
 /// steps from a tick-boundary set) through the reference, an `S5Timer`, the area's box and its
-/// STL operations. `#[kani::unwind(17)]`: the sequence loop runs 3 times, `advance_to` loops
-/// over the 4 time bases, and a one-tick pass over the area's one word runs the group code on
-/// a padded copy of 16 words (the bound is the largest, 16, plus the exit).
+/// STL operations. `#[kani::unwind(33)]`: the sequence loop runs 3 times, `advance_to` loops
+/// over the 4 time bases, and a one-tick pass over the area's one cell runs the group code on
+/// a padded copy of 32 cells (the bound is the largest, 32, plus the exit).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_sequence_equivalence() {
     const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
     bolero::check!()
