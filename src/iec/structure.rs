@@ -447,13 +447,16 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
             // Branches on IN and on the state, which a timer called once per scan takes the
             // same way scan after scan; for arrays of timers whose states differ, see
             // [`IecTimerOf::ton_for_arrays`].
+            // The commonest case of IN = 1, a timer timing since an earlier call (IN
+            // remembered and running: one test of two flag bits), is tested before the rise;
+            // the order changes no outcome, as both tests need IN remembered.
             IecKind::Ton => {
                 if !on {
                     self.clear(flags, false)
+                } else if f & (flag::IN | flag::RUNNING) == flag::IN | flag::RUNNING {
+                    self.advance(now, flags, false, true)
                 } else if !was_in {
                     self.begin(now, input.pt, flags, false, true)
-                } else if running {
-                    self.advance(now, flags, false, true)
                 } else {
                     self.idle(flags)
                 }
