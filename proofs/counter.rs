@@ -41,6 +41,18 @@ pub fn prop_step_equivalence<T: CounterInt>(
         r.state(),
         "CNT-EQUIV-01 state {kind:?} {state:?} {input:?}"
     );
+    // The form for arrays: the same outputs and state, computed without a branch.
+    let mut a = Counter::from_state(state);
+    assert_eq!(
+        a.call_for_arrays(kind, input),
+        ro,
+        "CNT-EQUIV-01 call_for_arrays outputs {kind:?} {state:?} {input:?}"
+    );
+    assert_eq!(
+        a.state(),
+        r.state(),
+        "CNT-EQUIV-01 call_for_arrays state {kind:?} {state:?} {input:?}"
+    );
 }
 
 /// CNT-SAT-01, CNT-PRIO-01, CNT-EDGE-01, CNT-SIMUL-01, CNT-Q-01: CV moves by at most one and
@@ -597,13 +609,16 @@ fn iec_counter_impls<T: CounterInt>(
     CounterState<T>,
     plc_timers::counter::CounterOutput<T>,
 )> {
-    let mut v = Vec::with_capacity(3);
+    let mut v = Vec::with_capacity(4);
     let mut r = CounterRef::from_state(st);
     let o = r.call(kind, i);
     v.push(("reference", r.state(), o));
     let mut p = Counter::from_state(st);
     let o = p.call(kind, i);
     v.push(("packed", p.state(), o));
+    let mut a = Counter::from_state(st);
+    let o = a.call_for_arrays(kind, i);
+    v.push(("packed, call_for_arrays", a.state(), o));
     if kind == CounterKind::Ctud {
         let mut bank = CounterBank::<T, 1>::new();
         check_eq!(bank.set_state(0, st), Ok(()));

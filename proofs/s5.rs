@@ -418,7 +418,7 @@ pub fn prop_sequence_equivalence_from(kind: S5Kind, initial: S5State, steps: &[(
             (Ok(a.q), Ok(a.bi), Ok(a.bcd)),
             "S5-EQUIV-02 STL at t = {t:?}"
         );
-        check_eq!(stl.words(), area.words(), "S5-EQUIV-02 STL state");
+        check!(stl.words().eq(area.words()), "S5-EQUIV-02 STL state");
     }
 }
 
@@ -679,7 +679,7 @@ pub fn run(imp: S5Impl, c: S5Case) -> (S5State, S5Output) {
             ];
             check_eq!(ops, [Ok(()); 3], "timer 1 exists");
             check_eq!(
-                area.words()[0],
+                area.words().next().expect("T 0"),
                 other,
                 "S5-AREA-01: T 0 of another base untouched"
             );
@@ -1356,12 +1356,12 @@ fn exhaustive_s5_rules() {
 /// kind, valid state, tick count and input under Kani. Symbolic: the kind, the state (invalid
 /// ones skipped), the tick count (any `u64`), S, R, FR and the TV (any valid S5TIME); the
 /// implementations are the reference, the word and the area's tick and STL operations (no
-/// division by the base: the area ticks by base). `#[kani::unwind(17)]`: the longest loops
-/// are the area tick's for one tick (`TimerWord::tick_once_all` takes the area's words in groups
-/// of 16, the last ones on a padded copy: 16 iterations per loop) and its exit; the others are
+/// division by the base: the area ticks by base). `#[kani::unwind(33)]`: the longest loops
+/// are the area tick's for one tick (`TimerWord::tick_once_cells` takes the area's cells in
+/// groups of 32, the last ones on a padded copy: 32 iterations per loop) and its exit; the others are
 /// shorter (the loop over `IMPLS`, 3 under Kani; the area's 2 words for more than one tick).
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_s5_rules() {
     bolero::check!()
         .with_type::<S5Case>()
@@ -1403,11 +1403,11 @@ fn kani_cell_word() {
 
 /// S5-AREA-01 on a two-timer area. Symbolic: both timers' states (any, invalid ones skipped),
 /// the tick base, the tick count `n` (any `u64`). The area's one-tick path runs its group code on
-/// a padded copy of 16 words whatever the area's size, so two timers keep the rest small.
-/// `#[kani::unwind(17)]`: that path's loops over the 16 words (16 iterations and the exit); the
+/// a padded copy of 32 cells whatever the area's size, so two timers keep the rest small.
+/// `#[kani::unwind(33)]`: that path's loops over the 32 cells (32 iterations and the exit); the
 /// loops over the area's 2 words and the check's over the 2 timers are shorter.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+#[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_area_tick() {
     bolero::check!()
         .with_type::<([S5State; 2], TimeBase, u64)>()
@@ -1512,12 +1512,12 @@ macro_rules! advance_to_harness {
     ($name:ident, $base:expr) => {
         /// `advance_to` over three timers whose bases are constants (see [`prop_advance_to`]).
         /// Symbolic: the three states (any; invalid ones skipped), the clock `from` (`u32` ms) and
-        /// the step `dt` (below 100 000 ms). `#[kani::unwind(17)]`: `advance_to`'s loop over the
-        /// 4 bases, the one-tick path's loops over a padded group of 16 words (16 iterations and
+        /// the step `dt` (below 100 000 ms). `#[kani::unwind(33)]`: `advance_to`'s loop over the
+        /// 4 bases, the one-tick path's loops over a padded group of 32 cells (32 iterations and
         /// the exit, the largest), the loop over the 3 words for more ticks, the check's over the
         /// 3 timers.
         #[test]
-        #[cfg_attr(kani, kani::proof, kani::unwind(17), kani::solver(kissat))]
+        #[cfg_attr(kani, kani::proof, kani::unwind(33), kani::solver(kissat))]
         fn $name() {
             bolero::check!()
                 .with_type::<([S5State; 3], u32, u32)>()
@@ -1539,11 +1539,11 @@ macro_rules! sequence_harness {
         /// stopped timer of this base, through the reference, an `S5Timer`, the area's box and
         /// its STL operations. R, which sets the base to 10 ms, is only in the 10 ms harness, so
         /// that every division by the timer's base is by a constant. Symbolic: the kind, per step
-        /// S, FR, the TV's units (0..=999) and an index into the steps. `#[kani::unwind(17)]`: the
+        /// S, FR, the TV's units (0..=999) and an index into the steps. `#[kani::unwind(33)]`: the
         /// sequence loop (3 iterations), `advance_to`'s loop over the 4 bases, and the one-tick
-        /// path's loops over a padded group of 16 words (16 and the exit, the largest).
+        /// path's loops over a padded group of 32 cells (32 and the exit, the largest).
         #[test]
-        #[cfg_attr(kani, kani::proof, kani::unwind(17), kani::solver(kissat))]
+        #[cfg_attr(kani, kani::proof, kani::unwind(33), kani::solver(kissat))]
         fn $name() {
             const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
             let base: TimeBase = $base;

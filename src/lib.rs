@@ -66,11 +66,18 @@
 //! ## Features
 //! - `std`: `std::error::Error` for the error types. Without it the crate is `no_std` and
 //!   allocation-free.
+//! - `simd-dispatch` (implies `std`): the bulk loops ([`counter::CounterBank::scan`],
+//!   [`iec::TonBank::scan`], [`s5::TimerMemory::tick`]) run compiled for AVX2 or AVX-512 when
+//!   the CPU has them (x86-64; detected at run time), instead of the build's target (SSE2 for
+//!   the default x86-64 target). The only `unsafe` of the crate, two calls, is behind it.
 //! - `bolero`: generators (`bolero_generator::TypeGenerator`) beside the kinds, inputs and states,
 //!   generating only valid values; the proofs use them as property tests, Kani proofs and fuzz
 //!   targets. Off by default: without it the crate has no dependency at all.
 #![no_std]
-#![forbid(unsafe_code)]
+// Without `simd-dispatch` no line of the crate is `unsafe`; with it, the two calls of
+// `simd::run` into code compiled for a detected vector extension are (see there why).
+#![cfg_attr(not(feature = "simd-dispatch"), forbid(unsafe_code))]
+#![cfg_attr(feature = "simd-dispatch", deny(unsafe_code))]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
 #[cfg(feature = "std")]
@@ -82,6 +89,7 @@ pub mod iec;
 mod operand;
 pub mod rule;
 pub mod s5;
+mod simd;
 pub mod time;
 
 pub use operand::{NoSuchOperand, Operand};

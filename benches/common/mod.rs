@@ -177,3 +177,174 @@ pub fn area_contents(n: usize) -> Vec<Option<(u16, u8)>> {
         .map(|_| (!rng.one_in(3)).then(|| (rng.below(999) as u16 + 1, rng.below(4) as u8)))
         .collect()
 }
+
+/// The input families every workload of the peers benchmark runs on, so that no figure depends
+/// on one shape of input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// Steady square waves: every input repeats with a period of its own (a conveyor's
+    /// sensors, a clock pulse), so a timer or counter takes the same path scan after scan
+    /// for a while and the processor's branch predictor learns it.
+    Square,
+    /// Random inputs: IN (and CU, CD of the one-step stream) flips with probability 0.10 per
+    /// step or scan, R, LD and S are random pulses, the counters of the banks see random
+    /// edges on every input, the timer area holds random values on random bases. A branch on
+    /// an input or on a state is mispredicted about as often as it changes.
+    Random,
+}
+
+impl Family {
+    /// Both families, in the order the benchmark runs them.
+    pub const ALL: [Family; 2] = [Family::Square, Family::Random];
+
+    /// The family's name, the prefix of its groups.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Family::Square => "square",
+            Family::Random => "random",
+        }
+    }
+
+    /// How the family's inputs are drawn, for the summary.
+    pub const fn description(self) -> &'static str {
+        match self {
+            Family::Square => {
+                "steady square waves: one step: IN/CU a square wave of 16 steps, CD of 12, R and \
+                 LD/S a one-step pulse every 64 and 48 steps, 7 ms between steps; TON bank: IN a \
+                 square wave per timer (period 20-200 scans, duty 25-75 %); counter banks: CU and \
+                 CD square waves of 2, 4 or 8 scans per counter, R and LD a pulse every 8 scans \
+                 on a quarter of the counters; timer area: blocks of 1 024 timers on one base, \
+                 values in sequence"
+            }
+            Family::Random => {
+                "random: one step: IN/CU and CD flip with probability 0.10 per step, R and LD/S \
+                 are 1 with probability 1/16, 0-14 ms between steps; TON bank: IN flips with \
+                 probability 0.10 per scan; counter banks: CU, CD random bits (a rising edge one \
+                 scan in four), R and LD 1 with probability 1/16; timer area: random values \
+                 1-999 on random bases"
+            }
+        }
+    }
+}
+
+/// The one-step stream of `family` (see [`Family`]); [`Random`](Family::Random) from `seed`.
+pub fn family_step_stream(family: Family, seed: u64) -> Vec<Step> {
+    match family {
+        Family::Square => (0..STEPS)
+            .map(|i| {
+                let in_ = u8::from(i % 16 < 8);
+                let cd = u8::from((i + 5) % 12 < 6);
+                let r = u8::from(i % 64 == 37);
+                let ld = u8::from(i % 48 == 20);
+                Step {
+                    bits: in_ | cd << 1 | r << 2 | ld << 3,
+                    dt: 7,
+                }
+            })
+            .collect(),
+        Family::Random => {
+            let mut rng = Rng::new(seed);
+            let mut level = 0u8;
+            (0..STEPS)
+                .map(|_| {
+                    for bit in [0u8, 1] {
+                        if rng.below(10) == 0 {
+                            level ^= 1 << bit;
+                        }
+                    }
+                    let mut bits = level;
+                    for bit in [2u8, 3] {
+                        if rng.one_in(16) {
+                            bits |= 1 << bit;
+                        }
+                    }
+                    Step {
+                        bits,
+                        dt: rng.below(15),
+                    }
+                })
+                .collect()
+        }
+    }
+}
+
+/// The TON plant of `family`: [`ton_plant`] for the square waves; for the random family the
+/// same presets, each IN flipping with probability 0.10 per scan (seed 43).
+pub fn family_ton_plant(family: Family) -> TonPlant {
+    let square = ton_plant();
+    match family {
+        Family::Square => square,
+        Family::Random => {
+            let mut rng = Rng::new(43);
+            let mut level: Vec<bool> = (0..BANK).map(|_| rng.one_in(2)).collect();
+            let scans = (0..SCANS)
+                .map(|_| {
+                    for l in level.iter_mut() {
+                        if rng.below(10) == 0 {
+                            *l = !*l;
+                        }
+                    }
+                    level.clone()
+                })
+                .collect();
+            TonPlant {
+                pt: square.pt,
+                scans,
+            }
+        }
+    }
+}
+
+/// The counter-bank scans of `family`: [`counter_scans`] for the random family; square waves
+/// for the other (see [`Family`]; the periods divide [`COUNTER_SCANS`], so the table repeats
+/// without a seam). With `up_only`, CD and LD stay 0.
+pub fn family_counter_scans(family: Family, up_only: bool) -> Vec<CounterScan> {
+    match family {
+        Family::Random => counter_scans(up_only),
+        Family::Square => {
+            let mut rng = Rng::new(8);
+            // Per counter: (period of CU, phase, period of CD, phase, pulse scan of R, of LD).
+            let waves: Vec<[u64; 6]> = (0..BANK)
+                .map(|i| {
+                    let pulses = i % 4 == 0;
+                    [
+                        2 << rng.below(3),
+                        rng.below(8),
+                        4 << rng.below(2),
+                        rng.below(8),
+                        if pulses { rng.below(8) } else { 8 },
+                        if pulses { rng.below(8) } else { 8 },
+                    ]
+                })
+                .collect();
+            (0..COUNTER_SCANS as u64)
+                .map(|s| {
+                    let sq = |period: u64, phase: u64| (s + phase) % period < period / 2;
+                    let cu = waves.iter().map(|w| sq(w[0], w[1])).collect();
+                    let r = waves.iter().map(|w| s == w[4]).collect();
+                    let (cd, ld) = if up_only {
+                        (vec![false; BANK], vec![false; BANK])
+                    } else {
+                        (
+                            waves.iter().map(|w| sq(w[2], w[3])).collect(),
+                            waves.iter().map(|w| s == w[5]).collect(),
+                        )
+                    };
+                    CounterScan { cu, cd, r, ld }
+                })
+                .collect()
+        }
+    }
+}
+
+/// The timer area's contents for `family` (as [`area_contents`]): random for the random
+/// family; for the square family a third of each block of 1 024 timers stopped (every third
+/// timer), the block's timers on one base (block `b` on base `b % 4`), values in sequence.
+pub fn family_area_contents(family: Family, n: usize) -> Vec<Option<(u16, u8)>> {
+    match family {
+        Family::Random => area_contents(n),
+        Family::Square => (0..n)
+            .map(|i| (i % 3 != 0).then(|| ((i % 999) as u16 + 1, ((i / 1024) % 4) as u8)))
+            .collect(),
+    }
+}

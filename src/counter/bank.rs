@@ -2,6 +2,7 @@
 //! counters sharing one preset. Each counter behaves exactly as [`super::CounterRef`] called as
 //! `CTUD` once per scan (CNT-EQUIV-01, checked in `proofs/counter.rs`).
 
+use super::packed::ctud_lane;
 use super::{outputs, CounterInt, CounterOutput, CounterState};
 use crate::operand::{self, NoSuchOperand, Operand};
 
@@ -105,18 +106,32 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
 
     /// One scan: every counter called once as CTUD with preset `pv`.
     ///
-    /// One pass over the arrays with the same straight-line code for every counter: the edges
-    /// give a 0/1 increment and decrement, applied by one saturating add and one saturating
-    /// subtract, and R and LD select, without a branch, so that LLVM vectorizes the loop (8 INT
-    /// counters per 128-bit instruction) and random edges cost no misprediction.
-    ///
-    /// Why it equals the reference's CTUD ([`super::CounterRef`]): `up` and `down` are its
-    /// edges (the input 1, its memory 0); both memories take the inputs on every call, also
-    /// under R and LD (CNT-EDGE-01). Up alone counts up, down alone counts down, both or
-    /// neither leave CV (CNT-SIMUL-01), with the reference's saturating steps (CNT-SAT-01);
-    /// LD replaces the count and R replaces both (CNT-PRIO-01).
+    /// One pass over the arrays with the same straight-line code for every counter, the lane
+    /// of [`super::Counter::call_for_arrays`] (the reference's CTUD, see there for why): the
+    /// edges give a 0/1 increment and decrement, applied by one saturating add and one
+    /// saturating subtract, and R and LD select, without a branch, so that LLVM vectorizes the
+    /// loop (8 INT counters per 128-bit instruction) and random edges cost no misprediction.
     pub fn scan(&mut self, inputs: &BankInputs<'_, N>, pv: T) {
-        let lanes = self.cv.iter_mut().zip(self.edges.iter_mut()).zip(
+        crate::simd::run(Scan {
+            bank: self,
+            inputs,
+            pv,
+        });
+    }
+}
+
+/// [`CounterBank::scan`] as a loop for [`crate::simd::run`].
+struct Scan<'a, 'b, T, const N: usize> {
+    bank: &'a mut CounterBank<T, N>,
+    inputs: &'a BankInputs<'b, N>,
+    pv: T,
+}
+
+impl<T: CounterInt, const N: usize> crate::simd::Kernel for Scan<'_, '_, T, N> {
+    #[inline(always)]
+    fn run(self) {
+        let Scan { bank, inputs, pv } = self;
+        let lanes = bank.cv.iter_mut().zip(bank.edges.iter_mut()).zip(
             inputs
                 .cu
                 .iter()
@@ -124,22 +139,7 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
                 .zip(inputs.r.iter().zip(inputs.ld.iter())),
         );
         for ((cv, edges), ((&cu, &cd), (&r, &ld))) in lanes {
-            // The edges as 0/1 bytes (the memory of CU in bit 0, of CD in bit 1), computed
-            // with byte arithmetic, which stays in the byte lanes of the vectors.
-            let e = *edges;
-            let up = u8::from(cu) & !e & CU_PREV;
-            let down = u8::from(cd) & !(e >> 1) & 1;
-            *edges = (u8::from(cu) * CU_PREV) | (u8::from(cd) * CD_PREV);
-            // Up alone adds 1, down alone subtracts 1: one saturating add and one saturating
-            // subtract per lane (`paddsw`/`psubsw` for INT), no select between two results.
-            let counted = cv.saturating_up_down(up & !down, down & !up);
-            *cv = if !(r | ld) {
-                counted
-            } else if r {
-                T::ZERO
-            } else {
-                pv
-            };
+            (*cv, *edges) = ctud_lane(*cv, *edges, cu, cd, r, ld, pv);
         }
     }
 }

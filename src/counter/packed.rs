@@ -63,14 +63,99 @@ impl<T: CounterInt> Counter<T> {
     pub const fn cv(&self) -> T {
         self.cv
     }
+
+    /// The call `call(kind, input)` for a loop over an array of counters: the same outputs
+    /// and the same counter afterwards as [`CounterOps::call`], computed without a branch on
+    /// the inputs or the state (`proofs/counter.rs` compares it with the reference on every
+    /// state and input of the small types).
+    ///
+    /// In a loop over many counters the inputs and states differ from one counter to the next,
+    /// so the branches of `call` (R, LD, an edge) are mispredicted about as often as they
+    /// change; here the edges give a 0/1 increment and decrement, applied by one saturating add
+    /// and one saturating subtract, and R and LD select the new CV by conditional moves that
+    /// the compiler must keep ([`core::hint::select_unpredictable`]). `call` is faster for a
+    /// counter called once per scan, whose branches go the same way scan after scan.
+    ///
+    /// Why it equals the reference: see [`CounterOps::call`] (the same rules), and the lane of
+    /// [`super::CounterBank::scan`], which is this function.
+    ///
+    /// ```
+    /// use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
+    /// let mut counters = [Counter::<i16>::new(); 3];
+    /// for cu in [true, false, true] {
+    ///     for c in counters.iter_mut() {
+    ///         c.call_for_arrays(CounterKind::Ctu, CounterInput { cu, pv: 2, ..Default::default() });
+    ///     }
+    /// }
+    /// assert!(counters.iter().all(|c| c.cv() == 2));
+    /// ```
+    #[inline(always)]
+    pub fn call_for_arrays(
+        &mut self,
+        kind: CounterKind,
+        input: CounterInput<T>,
+    ) -> CounterOutput<T> {
+        let (cu, cd, r, ld) = masked_inputs(kind, &input);
+        let (cv, edges) = ctud_lane(self.cv, self.edges, cu, cd, r, ld, input.pv);
+        self.cv = cv;
+        self.edges = edges;
+        outputs(cv, input.pv)
+    }
+}
+
+/// The inputs `kind` has, others taken as 0 (CNT-INPUTS-01): (CU, CD, R, LD).
+#[inline(always)]
+fn masked_inputs<T>(kind: CounterKind, input: &CounterInput<T>) -> (bool, bool, bool, bool) {
+    match kind {
+        CounterKind::Ctu => (input.cu, false, input.r, false),
+        CounterKind::Ctd => (false, input.cd, false, input.ld),
+        CounterKind::Ctud => (input.cu, input.cd, input.r, input.ld),
+    }
+}
+
+/// One CTUD call without a branch: CV and the edge byte (CU's memory in bit 0, CD's in bit 1)
+/// after a call with CU, CD, R, LD and PV. The lane of [`Counter::call_for_arrays`] and of
+/// [`super::CounterBank::scan`].
+///
+/// Why it equals the reference's CTUD: `up` and `down` are its edges (the input 1, its memory
+/// 0); both memories take the inputs on every call, also under R and LD (CNT-EDGE-01). Up alone
+/// counts up, down alone counts down, both or neither leave CV (CNT-SIMUL-01), with the
+/// reference's saturating steps (CNT-SAT-01); LD replaces the count and R replaces both
+/// (CNT-PRIO-01). The edges are computed with byte arithmetic, which stays in the byte lanes
+/// of the vectors when a loop over many counters is vectorized; the selects are
+/// `select_unpredictable`, which a vectorized loop turns into masks and a scalar loop keeps as
+/// conditional moves.
+#[inline(always)]
+pub(crate) fn ctud_lane<T: CounterInt>(
+    cv: T,
+    edges: u8,
+    cu: bool,
+    cd: bool,
+    r: bool,
+    ld: bool,
+    pv: T,
+) -> (T, u8) {
+    use core::hint::select_unpredictable as select;
+    // The inputs as 0/1 bytes, and every condition a test of a byte against 0: in vector
+    // lanes a test against 0 is one compare, where a `bool` taken as a condition costs a mask,
+    // a shift and a compare.
+    let (cu, cd, r, ld) = (u8::from(cu), u8::from(cd), u8::from(r), u8::from(ld));
+    let up = cu & !edges & CU_PREV;
+    let down = cd & !(edges >> 1) & 1;
+    let counted = cv.saturating_up_down(up & !down, down & !up);
+    let loaded = select(r != 0, T::ZERO, pv);
+    let cv = select(r | ld == 0, counted, loaded);
+    (cv, cu | cd << 1)
 }
 
 impl<T: CounterInt> CounterOps<T> for Counter<T> {
     /// The reference's rules (edges, then R before LD before counting), with the edge
     /// memories in one byte, as branches: for a counter called once per scan they go the same
-    /// way most scans, and a predicted branch costs less than computing every case; CV is
-    /// written only when it changes (measured faster than either the branch-free form or a
-    /// write on every call).
+    /// way most scans, and a predicted branch costs less than computing every case. CV is
+    /// written on every call, as the reference writes it: measured on both input families of
+    /// the peers benchmark, a write only when CV changes (one more branch, mispredicted on
+    /// random edges) was 5-10 % slower, and the branch-free form of
+    /// [`Counter::call_for_arrays`] slower still for one counter called once per scan.
     ///
     /// Why it equals [`super::CounterRef`]: the inputs a kind lacks are taken as 0, as the
     /// reference's `kind.mask` does (CNT-INPUTS-01). `up` and `down` are the reference's
@@ -81,32 +166,27 @@ impl<T: CounterInt> CounterOps<T> for Counter<T> {
     /// (CNT-SAT-01).
     #[inline(always)]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
-        let (cu, cd, r, ld) = match kind {
-            CounterKind::Ctu => (input.cu, false, input.r, false),
-            CounterKind::Ctd => (false, input.cd, false, input.ld),
-            CounterKind::Ctud => (input.cu, input.cd, input.r, input.ld),
-        };
+        let (cu, cd, r, ld) = masked_inputs(kind, &input);
         // Both members are read before either is written: a read of the whole struct after a
         // write of one byte of it would wait for that write to reach the cache.
         let (v, e) = (self.cv, self.edges);
         let up = cu && e & CU_PREV == 0;
         let down = cd && e & CD_PREV == 0;
         self.edges = edge_bits(cu, cd);
-        let mut cv = v;
-        if r {
-            cv = T::ZERO;
-            self.cv = cv;
+        let cv = if r {
+            T::ZERO
         } else if ld {
-            cv = input.pv;
-            self.cv = cv;
+            input.pv
         } else if up != down {
-            cv = if up {
+            if up {
                 v.saturating_inc()
             } else {
                 v.saturating_dec()
-            };
-            self.cv = cv;
-        }
+            }
+        } else {
+            v
+        };
+        self.cv = cv;
         outputs(cv, input.pv)
     }
 

@@ -316,15 +316,18 @@ fn masked<C: ClockWord>(c: C, mask: u32) -> C {
 
 impl<C: ClockWord> IecTimerOf<C> {
     /// The call `call(IecKind::Ton, now, input)` for a loop over an array of timers: no branch
-    /// on IN or on the timer's state, which differ from one timer to the next in such a loop
-    /// (a branch on them would be mispredicted about every other timer); one branch on the
-    /// rising edge of IN, which a timer sees once per switching on. Same outputs and same
+    /// on IN, on its rising edge or on the timer's state, which differ from one timer to the
+    /// next in such a loop (a branch on them is mispredicted about as often as they change:
+    /// the rising edge, once a branch, cost as much as the rest of the call on random
+    /// inputs). Same outputs and same
     /// structure afterwards as [`IecTimerOps::call`] (`proofs/iec.rs` compares it with the
     /// reference on every structure and operation of a 4-bit clock). `call` is faster for a
     /// timer called once per scan, whose branches go the same way scan after scan.
     ///
     /// Why it equals the reference's `ton`: a rise is `begin`, the reference's `start` and
-    /// `update` at one instant (see there). Otherwise both remaining cases are computed and
+    /// `update` at one instant (see there), which is the update of a running timer with START
+    /// = now and the new PT (elapsed = 0: reached exactly when PT = 0), so a rise selects
+    /// those two and goes through the update below. Then both remaining cases are computed and
     /// selected: a running timer updates (`elapsed = now - START` modulo 2^BITS; reached at
     /// `elapsed >= PT`: ET = PT, Q = 1, stopped, START = 0; before: ET = elapsed, Q = 0, still
     /// running), a stopped one keeps ET and Q (its START is 0 already, [`IecState::is_valid`]);
@@ -343,20 +346,23 @@ impl<C: ClockWord> IecTimerOf<C> {
         // which on some CPUs (AMD Zen) makes each timer wait for the previous timer's result.
         let f = u32::from(self.flags);
         let on = u32::from(input.input);
-        if on & !f & u32::from(flag::IN) != 0 {
-            return self.begin(now, input.pt, kind_bits | flag::IN, false, true);
-        }
-        let run = f & u32::from(flag::RUNNING) != 0;
-        let elapsed = now.elapsed_since(self.start);
-        let not_reached = !reached(elapsed, self.pt);
-        let et = select(run, select(not_reached, elapsed, self.pt), self.et);
+        // A rise is taken as a running timer with START = now and the new PT, whose update
+        // then finds elapsed = 0 (see above): selected, not branched to.
+        let rise = on & !f & u32::from(flag::IN) != 0;
+        let start = select(rise, now, self.start);
+        let pt = select(rise, C::from_preset(input.pt.clamp_negative()), self.pt);
+        let run = rise | (f & u32::from(flag::RUNNING) != 0);
+        let elapsed = now.elapsed_since(start);
+        let not_reached = !reached(elapsed, pt);
+        let et = select(run, select(not_reached, elapsed, pt), self.et);
         // Q (bit 1) and RUNNING (bit 2) after the update: a running timer is either still
         // running (4) or has expired with Q = 1 (2); a stopped one keeps its Q.
         let status = select(run, 2 + 2 * u32::from(not_reached), f & u32::from(flag::Q));
-        // IN = 0 clears everything.
+        // IN = 0 clears everything but PT.
         let on_mask = on.wrapping_neg();
         let status = (u32::from(flag::IN) | status) & on_mask;
-        self.start = masked(self.start, (status >> 2).wrapping_neg());
+        self.start = masked(start, (status >> 2).wrapping_neg());
+        self.pt = pt;
         self.et = masked(et, on_mask);
         self.flags = kind_bits | status as u8;
         IecOutput {
@@ -441,13 +447,16 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
             // Branches on IN and on the state, which a timer called once per scan takes the
             // same way scan after scan; for arrays of timers whose states differ, see
             // [`IecTimerOf::ton_for_arrays`].
+            // The commonest case of IN = 1, a timer timing since an earlier call (IN
+            // remembered and running: one test of two flag bits), is tested before the rise;
+            // the order changes no outcome, as both tests need IN remembered.
             IecKind::Ton => {
                 if !on {
                     self.clear(flags, false)
+                } else if f & (flag::IN | flag::RUNNING) == flag::IN | flag::RUNNING {
+                    self.advance(now, flags, false, true)
                 } else if !was_in {
                     self.begin(now, input.pt, flags, false, true)
-                } else if running {
-                    self.advance(now, flags, false, true)
                 } else {
                     self.idle(flags)
                 }

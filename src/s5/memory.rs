@@ -43,9 +43,21 @@ use crate::time::{CpuTime, S5Time, TimeBase};
 /// assert_eq!(running, [true, true]);
 /// # Ok::<(), plc_timers::NoSuchOperand>(())
 /// ```
+///
+/// # Representation
+///
+/// Per timer, a 16-bit cell with everything the OS tick reads and writes (value and base where
+/// the CPU's timer word has them, RUNNING, Q and the expiry status in the bits the CPU's word
+/// leaves 0), and a byte with the edge memories of S and FR, which only the operations use
+/// ([`TimerWord`] holds the same fields in one 32-bit word: 17 bits of fields do not fit 16).
+/// So a tick reads and writes 2 bytes per timer, the size of the S7 timer word, and the
+/// operations convert a timer's cell and edges to its [`TimerWord`] and back.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TimerMemory<const N: usize = 256> {
-    words: [TimerWord; N],
+    /// Per timer: [`TimerWord::to_cell`]'s cell.
+    cells: [u16; N],
+    /// Per timer: [`TimerWord::to_cell`]'s edge byte.
+    edges: [u8; N],
     now: CpuTime,
 }
 
@@ -68,7 +80,8 @@ impl<const N: usize> TimerMemory<N> {
     /// ```
     pub const fn new() -> TimerMemory<N> {
         TimerMemory {
-            words: [TimerWord::RESET; N],
+            cells: [0; N],
+            edges: [0; N],
             now: CpuTime::ZERO,
         }
     }
@@ -85,12 +98,28 @@ impl<const N: usize> TimerMemory<N> {
     /// assert_eq!(area.load(0), Ok(70));
     /// ```
     pub const fn from_words(words: [TimerWord; N], now: CpuTime) -> TimerMemory<N> {
-        TimerMemory { words, now }
+        let mut area = TimerMemory::new();
+        area.now = now;
+        let mut i = 0;
+        while i < N {
+            (area.cells[i], area.edges[i]) = words[i].to_cell();
+            i += 1;
+        }
+        area
     }
 
-    /// The timer words.
-    pub const fn words(&self) -> &[TimerWord; N] {
-        &self.words
+    /// The timer words, `T 0` first.
+    ///
+    /// ```
+    /// use plc_timers::s5::{TimerMemory, TimerWord};
+    /// let area = TimerMemory::<3>::new();
+    /// assert!(area.words().all(|w| w == TimerWord::RESET));
+    /// ```
+    pub fn words(&self) -> impl ExactSizeIterator<Item = TimerWord> + '_ {
+        self.cells
+            .iter()
+            .zip(&self.edges)
+            .map(|(&c, &e)| TimerWord::from_cell(c, e))
     }
 
     /// The CPU time up to which ticks have been applied.
@@ -106,10 +135,10 @@ impl<const N: usize> TimerMemory<N> {
     /// Puts timer `index` in `state`; `Ok(false)` (and no change) when the state is not valid.
     #[must_use = "`Ok(false)` says the state was not valid and the operand did not change"]
     pub fn set_state(&mut self, index: usize, state: S5State) -> Result<bool, NoSuchOperand> {
-        let w = self.word(index)?;
+        self.read(index)?;
         Ok(match TimerWord::from_state(state) {
             Some(new) => {
-                *w = new;
+                self.write(index, new);
                 true
             }
             None => false,
@@ -118,33 +147,52 @@ impl<const N: usize> TimerMemory<N> {
 
     /// The outputs (Q, BI, BCD) of every timer, `T 0` first.
     pub fn outputs(&self) -> impl ExactSizeIterator<Item = S5Output> + '_ {
-        self.words.iter().map(|w| w.output())
+        self.words().map(TimerWord::output)
     }
 
-    fn word(&mut self, index: usize) -> Result<&mut TimerWord, NoSuchOperand> {
-        operand::word_mut(&mut self.words, Operand::Timer, index)
+    /// Timer `index`'s word with `op` applied, stored back; the new word.
+    fn update(
+        &mut self,
+        index: usize,
+        op: impl FnOnce(TimerWord) -> TimerWord,
+    ) -> Result<TimerWord, NoSuchOperand> {
+        let w = op(self.read(index)?);
+        self.write(index, w);
+        Ok(w)
     }
 
+    /// Timer `index`'s word (the index checked, with the error that names the area's range).
     fn read(&self, index: usize) -> Result<TimerWord, NoSuchOperand> {
-        operand::word(&self.words, Operand::Timer, index)
+        let cell = operand::word(&self.cells, Operand::Timer, index)?;
+        Ok(TimerWord::from_cell(cell, self.edges[index]))
+    }
+
+    /// Stores `w` as timer `index` (`index < N`, checked by [`TimerMemory::read`] before).
+    fn write(&mut self, index: usize, w: TimerWord) {
+        (self.cells[index], self.edges[index]) = w.to_cell();
     }
 
     /// `n` ticks of `base` for the whole area: every running timer of that base loses
-    /// `min(n, value)` units (S5TMR-TICK-01). One pass over the words, which LLVM vectorizes:
-    /// for one tick, 16 words at a time by subtraction alone unless one of them runs out
-    /// ([`TimerWord::tick_once`] then does those 16); for more, branch-free.
+    /// `min(n, value)` units (S5TMR-TICK-01). One pass over the 16-bit cells (2 bytes per
+    /// timer; the edge memories are not touched), which LLVM vectorizes: for one tick, 32
+    /// cells at a time by subtraction alone unless one of them runs out
+    /// ([`TimerWord::tick_once`] then does those 32); for more, branch-free.
     pub fn tick(&mut self, base: TimeBase, n: u64) {
         let bits = u32::from(base.bits());
         if n == 1 {
             // The OS tick as it comes: one unit, the commonest case, with the least work.
-            TimerWord::tick_once_all(&mut self.words, bits);
+            crate::simd::run(TickOnce {
+                cells: &mut self.cells,
+                bits,
+            });
             return;
         }
         // A value is at most 999 units, so any count from 1 000 on acts as 1 000: the count
-        // fits the 32-bit lanes of the words ([`TimerWord::tick_units`]).
+        // fits the 32-bit lanes of the words ([`TimerWord::tick_units`]). A tick changes no
+        // edge memory, so the cells go through the word with edges 0.
         let n = n.min(1_000) as u32;
-        for w in self.words.iter_mut() {
-            *w = w.tick_units(bits, n);
+        for c in self.cells.iter_mut() {
+            *c = TimerWord::from_cell(*c, 0).tick_units(bits, n).to_cell().0;
         }
     }
 
@@ -169,9 +217,7 @@ impl<const N: usize> TimerMemory<N> {
 
     /// `FR T n` with RLO `fr` (enable): a rising RLO clears the start edge memory.
     pub fn fr(&mut self, index: usize, fr: bool) -> Result<(), NoSuchOperand> {
-        let w = self.word(index)?;
-        *w = w.enable(fr);
-        Ok(())
+        self.update(index, |w| w.enable(fr)).map(drop)
     }
 
     /// `SP`/`SE`/`SD`/`SS`/`SF T n` with RLO `s`, the time value `tv` loaded in ACCU 1.
@@ -182,16 +228,12 @@ impl<const N: usize> TimerMemory<N> {
         s: bool,
         tv: S5Time,
     ) -> Result<(), NoSuchOperand> {
-        let w = self.word(index)?;
-        *w = w.start(kind, s, tv);
-        Ok(())
+        self.update(index, |w| w.start(kind, s, tv)).map(drop)
     }
 
     /// `R T n` with RLO `r`.
     pub fn reset(&mut self, index: usize, r: bool) -> Result<(), NoSuchOperand> {
-        let w = self.word(index)?;
-        *w = w.reset(r);
-        Ok(())
+        self.update(index, |w| w.reset(r)).map(drop)
     }
 
     /// `L T n`: the remaining value in binary (S5TMR-LOAD-01).
@@ -221,9 +263,8 @@ impl<const N: usize> TimerMemory<N> {
         // Check the operand before the clock moves, so that an error changes nothing.
         self.read(index)?;
         self.advance_to(now);
-        let w = self.word(index)?;
-        *w = w.execute(kind, input);
-        Ok(w.output())
+        self.update(index, |w| w.execute(kind, input))
+            .map(TimerWord::output)
     }
 
     /// Runs `op` on the reference timer in the state of timer `index` (its previous execution
@@ -242,12 +283,11 @@ impl<const N: usize> TimerMemory<N> {
             return Ok(rec.finish(self.read(index)?.output()));
         };
         op(&mut timer, &mut rec);
-        let w = self.word(index)?;
         // The reference keeps its state valid (S5TMR-RANGE-01), so the word takes it.
         if let Some(new) = TimerWord::from_state(timer.state()) {
-            *w = new;
+            self.write(index, new);
         }
-        Ok(rec.finish(w.output()))
+        Ok(rec.finish(self.read(index)?.output()))
     }
 
     /// [`TimerMemory::call`], explained through the reference ([`S5TimerRef::call_explained`]):
@@ -349,8 +389,23 @@ impl<const N: usize> TimerMemory<N> {
         if now <= self.now {
             return;
         }
-        let keep = self.words[index];
+        // `index` was checked by the caller's `read`.
+        let keep = (self.cells[index], self.edges[index]);
         self.advance_to(now);
-        self.words[index] = keep;
+        (self.cells[index], self.edges[index]) = keep;
     }
+}
+
+/// One tick of every cell ([`TimerWord::tick_once_cells`]) as a loop for [`crate::simd::run`].
+struct TickOnce<'a> {
+    cells: &'a mut [u16],
+    bits: u32,
+}
+
+impl crate::simd::Kernel for TickOnce<'_> {
+    #[inline(always)]
+    fn run(self) {
+        TimerWord::tick_once_cells(self.cells, self.bits);
+    }
+
 }

@@ -48,6 +48,48 @@ const _: () = {
     assert!(union == USED);
 };
 
+/// The flag bits of a timer memory area's 16-bit cell ([`TimerWord::to_cell`]); value and base
+/// are where the word has them.
+pub(crate) mod cell {
+    /// Bit 10: the status when the running time runs out.
+    pub const Q_ON_EXPIRY: u32 = 1 << 10;
+    /// Bit 14: the status Q.
+    pub const Q: u32 = 1 << 14;
+    /// Bit 15: the time is running.
+    pub const RUNNING: u32 = 1 << 15;
+    // Disjoint from each other and from VALUE (bits 9-0) and BASE (bits 13-12).
+    const _: () = assert!(
+        (Q_ON_EXPIRY | Q | RUNNING) & (super::VALUE | super::BASE) == 0
+            && Q_ON_EXPIRY + Q + RUNNING == Q_ON_EXPIRY | Q | RUNNING
+    );
+}
+
+/// Cells per group of [`TimerWord::tick_once_cells`]: four 128-bit vectors of 16-bit lanes.
+const CELL_GROUP: usize = 32;
+
+/// One group of [`TimerWord::tick_once_cells`] (see there why it equals `tick_once`), with
+/// `offset = 2^15 - (target + 1)` for the ticking base's `target`.
+#[inline(always)]
+fn tick_cell_group(group: &mut [u16; CELL_GROUP], offset: u16, base_bits: u32) {
+    const KEY: u16 = cell::RUNNING as u16 | BASE as u16 | VALUE as u16;
+    const BIAS: u16 = 0x8000;
+    let limit = (1023 ^ BIAS) as i16;
+    let mut ticked = [0u16; CELL_GROUP];
+    let mut ends = false;
+    for (t, &c) in ticked.iter_mut().zip(group.iter()) {
+        let x = (c & KEY).wrapping_add(offset);
+        ends |= x == BIAS;
+        *t = c.wrapping_sub(u16::from((x as i16) < limit));
+    }
+    if ends {
+        for c in group.iter_mut() {
+            *c = TimerWord::from_cell(*c, 0).tick_once(base_bits).to_cell().0;
+        }
+    } else {
+        *group = ticked;
+    }
+}
+
 /// Division of a CPU time by a time base (10^k ms, k = 1..=4, base code k - 1) without a
 /// division instruction: `(t >> k) * M >> (64 - k + L)`, with `L = ceil(log2(5^k))` and
 /// `M = ceil(2^(64 - k + L) / 5^k)`.
@@ -266,59 +308,71 @@ impl TimerWord {
         TimerWord(Self::expire_where(w - dec, expired))
     }
 
-    /// [`TimerWord::tick_once`] for every word of `words` (the OS tick of an area), 16 words at
-    /// a time. A tick ends a timer's time in very few words (value 1 of the ticking base); a
-    /// group of 16 in which none ends is done by the short form below, a group in which one
-    /// ends by `tick_once` itself.
+    /// The word as a timer memory area stores it ([`super::TimerMemory`]): a 16-bit cell with
+    /// everything the OS tick reads and writes, and a byte with the edge memories, which only
+    /// the operations use. Cell: value in bits 9-0 and base in bits 13-12 (the CPU's timer word,
+    /// LAD manual §9.1), the expiry status in bit 10, Q in bit 14, RUNNING in bit 15 (bits the
+    /// CPU's word leaves 0); edge byte: S in bit 0, FR in bit 1. The inverse of
+    /// [`TimerWord::from_cell`]: the fields are moved, none is lost (the word's five flags and
+    /// 12 bits of value and base are 17 bits, one more than a cell has; the edges are the two
+    /// the tick never reads).
+    #[inline(always)]
+    pub(crate) const fn to_cell(self) -> (u16, u8) {
+        let w = self.0;
+        let cell =
+            (w & (VALUE | BASE)) | (w & RUNNING) >> 1 | (w & Q) >> 3 | (w & Q_ON_EXPIRY) >> 8;
+        (cell as u16, ((w & (S_PREV | FR_PREV)) >> 19) as u8)
+    }
+
+    /// The word a timer memory area stores as `cell` and `edges` ([`TimerWord::to_cell`]).
+    /// Valid for every cell and edge byte `to_cell` gives; the area holds no other.
+    #[inline(always)]
+    pub(crate) const fn from_cell(cell: u16, edges: u8) -> TimerWord {
+        let c = cell as u32;
+        TimerWord(
+            (c & (VALUE | BASE))
+                | (c & cell::RUNNING) << 1
+                | (c & cell::Q) << 3
+                | (c & cell::Q_ON_EXPIRY) << 8
+                | ((edges & 3) as u32) << 19,
+        )
+    }
+
+    /// [`TimerWord::tick_once`] for every cell of `cells` (the OS tick of an area, cells as
+    /// [`TimerWord::to_cell`] makes them), 32 cells at a time: 16-bit lanes, 8 cells per SSE2
+    /// instruction (twice the words of 32-bit lanes). A tick ends a timer's time in very few
+    /// cells (value 1 of the ticking base); a group of 32 in which none ends is done by the
+    /// short form below, a group in which one ends by `tick_once` itself on each word.
     ///
     /// Why the short form equals `tick_once` on such a group: `tick_once` subtracts 1 from a
-    /// word whose RUNNING and base bits are `RUNNING | base << 12` and whose value is not 0,
-    /// and changes no other word unless it expires one (value 1). Those words are the ones
-    /// whose bits RUNNING, BASE and VALUE, `key = w & (RUNNING | BASE | VALUE)`, lie in
-    /// `target + 1 ..= target + 1023` for `target = RUNNING | base << 12` (VALUE is the low 10
-    /// bits, so within that range only VALUE differs from `target`): `key - (target + 1) <
-    /// 1023` unsigned, computed as the signed compare `x < 1023 ^ 2^31` of
-    /// `x = key + 2^31 - (target + 1)` (adding 2^31 modulo 2^32 flips the top bit, which maps
-    /// the unsigned order onto the signed one). Such a word expires when `key = target + 1`, i.e. `x = 2^31`; the
-    /// group takes the short form only when no word has that `x`. The short form is straight
-    /// 32-bit lane arithmetic that the compiler vectorizes (4 words per SSE2 instruction).
-    pub(crate) fn tick_once_all(words: &mut [TimerWord], base_bits: u32) {
-        const KEY: u32 = RUNNING | BASE | VALUE;
-        const BIAS: u32 = 0x8000_0000;
-        let target = RUNNING | (base_bits & 3) << 12;
+    /// timer running on this base whose value is not 0, and changes no other timer unless it
+    /// expires one (value 1). In a cell those timers are the ones whose bits RUNNING, BASE and
+    /// VALUE, `key = c & (RUNNING | BASE | VALUE)`, lie in `target + 1 ..= target + 1023` for
+    /// `target = RUNNING | base << 12` (VALUE is the low 10 bits, so within that range only
+    /// VALUE differs from `target`), and subtracting 1 from such a cell takes 1 from its value
+    /// field alone. The range test is `key - (target + 1) < 1023` unsigned (modulo 2^16),
+    /// computed as the signed 16-bit compare `x < 1023 ^ 2^15` of `x = key + 2^15 - (target +
+    /// 1)` (adding 2^15 modulo 2^16 flips the top bit, which maps the unsigned order onto the
+    /// signed one). Such a cell expires when `key = target + 1`, i.e. `x = 2^15`; the group
+    /// takes the short form only when no cell has that `x`.
+    #[inline(always)]
+    pub(crate) fn tick_once_cells(cells: &mut [u16], base_bits: u32) {
+        const BIAS: u16 = 0x8000;
+        let target = cell::RUNNING as u16 | ((base_bits & 3) as u16) << 12;
         // `black_box` only hides the constant from the optimizer (it is the same value):
         // seeing it, LLVM rewrites the signed compare below as an unsigned one, which SSE2
-        // does with one more instruction per 4 words (measured 10 % slower).
+        // does with more instructions.
         let offset = core::hint::black_box(BIAS.wrapping_sub(target + 1));
-        let limit = (1023 ^ BIAS) as i32;
-        let tick_group = |group: &mut [TimerWord; 16]| {
-            let mut ticked = [0u32; 16];
-            let mut ends = false;
-            for (t, w) in ticked.iter_mut().zip(group.iter()) {
-                let x = (w.0 & KEY).wrapping_add(offset);
-                ends |= x == BIAS;
-                *t = w.0 - u32::from((x as i32) < limit);
-            }
-            if ends {
-                for w in group.iter_mut() {
-                    *w = w.tick_once(base_bits);
-                }
-            } else {
-                for (w, t) in group.iter_mut().zip(ticked) {
-                    w.0 = t;
-                }
-            }
-        };
-        let (groups, rest) = words.as_chunks_mut::<16>();
+        let (groups, rest) = cells.as_chunks_mut::<CELL_GROUP>();
         for group in groups {
-            tick_group(group);
+            tick_cell_group(group, offset, base_bits);
         }
-        // The last `len % 16` words: through the same code on a padded copy (the padding
-        // words are stopped timers, which a tick leaves as they are).
+        // The last `len % 32` cells: through the same code on a padded copy (the padding
+        // cells are stopped timers, which a tick leaves as they are).
         if !rest.is_empty() {
-            let mut group = [TimerWord::RESET; 16];
+            let mut group = [0u16; CELL_GROUP];
             group[..rest.len()].copy_from_slice(rest);
-            tick_group(&mut group);
+            tick_cell_group(&mut group, offset, base_bits);
             rest.copy_from_slice(&group[..rest.len()]);
         }
     }
@@ -475,11 +529,11 @@ impl S5TimerOps for S5Timer {
 mod tests {
     use super::{div_by_base, TimerWord, BASE_DIVISORS, USED};
 
-    /// `tick_once_all` equals `tick_once` on every word: areas of random valid words (values
-    /// 0..=999 with many 0, 1 and 2, every base, running or not, any status bits), of lengths
-    /// that are and are not multiples of 16, for every base.
+    /// `tick_once_cells` equals `tick_once` on every word: areas of random valid words
+    /// (values 0..=999 with many 0, 1 and 2, every base, running or not, any status bits), as
+    /// cells, of lengths that are and are not multiples of the group of 32, for every base.
     #[test]
-    fn tick_once_all_equals_tick_once() {
+    fn tick_once_cells_equals_tick_once() {
         let mut x = 0x2545_F491_4F6C_DD1Du64;
         let mut next = move || {
             x ^= x << 13;
@@ -487,7 +541,7 @@ mod tests {
             x ^= x << 17;
             x
         };
-        for len in [0, 1, 15, 16, 17, 64, 100] {
+        for len in [0, 1, 15, 16, 17, 31, 32, 33, 64, 100] {
             for round in 0..200 {
                 let words: [TimerWord; 100] = core::array::from_fn(|_| {
                     let r = next();
@@ -501,15 +555,21 @@ mod tests {
                         .expect("a valid word")
                 });
                 let base = round % 4;
-                let mut area = words;
-                TimerWord::tick_once_all(&mut area[..len], base);
+                let cells = words.map(|w| w.to_cell());
+                let mut area = cells.map(|(c, _)| c);
+                TimerWord::tick_once_cells(&mut area[..len], base);
                 for i in 0..100 {
                     let expected = if i < len {
                         words[i].tick_once(base)
                     } else {
                         words[i]
                     };
-                    assert_eq!(area[i], expected, "word {i} of {len}, base {base}");
+                    assert_eq!(
+                        TimerWord::from_cell(area[i], cells[i].1),
+                        expected,
+                        "word {i} of {len}, base {base}"
+                    );
+                    assert_eq!(expected.to_cell().1, cells[i].1, "a tick keeps the edges");
                 }
             }
         }

@@ -64,7 +64,7 @@ impl Mirror for plc_timers_timer_memory {
 
     fn store(m: &Self::Core) -> Self {
         let mut words = [0; PLC_TIMERS_TIMER_COUNT];
-        for (bits, w) in words.iter_mut().zip(m.words().iter()) {
+        for (bits, w) in words.iter_mut().zip(m.words()) {
             *bits = w.bits();
         }
         plc_timers_timer_memory {
