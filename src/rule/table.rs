@@ -59,7 +59,7 @@ pub enum Rule {
     SD_Q_01,
     /// SS-Q-01 (`spec/requirements/s5.toml`): S\_ODTS starts on a rising S and runs on when S falls; Q = 1 once the time has run out, whatever S does, until R. A rising S while running, or after the time has run out, restarts the time with TV; a Q of 1 stays 1 through the restart.
     SS_Q_01,
-    /// SF-Q-01 (`spec/requirements/s5.toml`): S\_OFFDT starts on a falling S and Q = 1 while it runs; a rising S sets Q = 1 and stops a running time (value kept); the time starts again only on the next falling S. Q is the timer's status bit, set by these edges and cleared by the time running out and by R: after R with S held at 1, Q stays 0 until S changes.
+    /// SF-Q-01 (`spec/requirements/s5.toml`): S\_OFFDT starts on a falling S and Q = 1 while it runs; a rising S sets Q = 1 and stops a running time, keeping the value it had reached at BI/BCD until the next start or R; the time starts again only on the next falling S. Q is the timer's status bit, set by these edges and cleared by the time running out and by R: after R with S held at 1, Q stays 0 until S changes.
     SF_Q_01,
     /// S5-EQUIV-01 (`spec/requirements/s5.toml`): The packed timer word, mapped through the abstraction function, behaves exactly as the reference on every state, tick count and input.
     S5_EQUIV_01,
@@ -372,7 +372,7 @@ impl Rule {
             Rule::SE_RUN_ON_01 => "S_PEXT starts on a rising S and runs on when S falls, Q = 1 while it runs; a rising S while it runs restarts it with TV.",
             Rule::SD_Q_01 => "S_ODT starts on a rising S and runs while S = 1; Q = 1 when the time has run out, S is still 1 and R = 0; S falling stops it (and clears an expired Q); a restart (a new rising S, or an FR edge with S held) reloads TV with Q = 0 until the new time runs out.",
             Rule::SS_Q_01 => "S_ODTS starts on a rising S and runs on when S falls; Q = 1 once the time has run out, whatever S does, until R. A rising S while running, or after the time has run out, restarts the time with TV; a Q of 1 stays 1 through the restart.",
-            Rule::SF_Q_01 => "S_OFFDT starts on a falling S and Q = 1 while it runs; a rising S sets Q = 1 and stops a running time (value kept); the time starts again only on the next falling S. Q is the timer's status bit, set by these edges and cleared by the time running out and by R: after R with S held at 1, Q stays 0 until S changes.",
+            Rule::SF_Q_01 => "S_OFFDT starts on a falling S and Q = 1 while it runs; a rising S sets Q = 1 and stops a running time, keeping the value it had reached at BI/BCD until the next start or R; the time starts again only on the next falling S. Q is the timer's status bit, set by these edges and cleared by the time running out and by R: after R with S held at 1, Q stays 0 until S changes.",
             Rule::S5_EQUIV_01 => "The packed timer word, mapped through the abstraction function, behaves exactly as the reference on every state, tick count and input.",
             Rule::S5_EQUIV_02 => "From the initial state, every input sequence (S, R, FR, TV, time steps) gives the same outputs and states through the reference (ticks counted per timer from the clock) and the timer memory area (ticks applied per base by the area).",
             Rule::S5_AREA_01 => "A time-base tick of the timer memory area updates every running timer of that base in one pass, as the reference tick of each timer.",
