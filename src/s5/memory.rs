@@ -407,5 +407,4 @@ impl crate::simd::Kernel for TickOnce<'_> {
     fn run(self) {
         TimerWord::tick_once_cells(self.cells, self.bits);
     }
-
 }

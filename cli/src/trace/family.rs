@@ -549,8 +549,7 @@ impl<T: S5TimerOps> S5Adapter<T> {
     /// The core's input struct of a row.
     #[inline]
     fn input(&self, signals: Signals, tv: S5Time) -> S5Input {
-        S5Input::new(signals.get(Port::S), signals.get(Port::R), tv)
-            .with_fr(signals.get(Port::Fr))
+        S5Input::new(signals.get(Port::S), signals.get(Port::R), tv).with_fr(signals.get(Port::Fr))
     }
 
     fn new(block: Block, kind: S5Kind, timer: T) -> S5Adapter<T> {
@@ -656,7 +655,12 @@ impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Adapter 
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
     }
 
-    fn call_explained(&mut self, now: u64, signals: Signals, pt: Time) -> Explained<IecOutput<u32>> {
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        pt: Time,
+    ) -> Explained<IecOutput<u32>> {
         let input = self.input(signals, pt);
         self.timer
             .explained(self.kind, CpuTime::from_millis(now), input)
@@ -724,7 +728,11 @@ fn int_preset_error<N: CounterInt>() -> String {
     )
 }
 
-impl<N: CounterInt, C: CounterOps<N> + Explains<CounterKind, CounterInput<N>, CounterOutput<N>>> Adapter for CounterAdapter<N, C> {
+impl<
+        N: CounterInt,
+        C: CounterOps<N> + Explains<CounterKind, CounterInput<N>, CounterOutput<N>>,
+    > Adapter for CounterAdapter<N, C>
+{
     type Preset = N;
     type State = CounterState<N>;
     type Output = CounterOutput<N>;
@@ -821,7 +829,9 @@ impl<C: S5CounterOps> S5CounterAdapter<C> {
     }
 }
 
-impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>> Adapter for S5CounterAdapter<C> {
+impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>> Adapter
+    for S5CounterAdapter<C>
+{
     type Preset = CounterPreset;
     type State = S5CounterState;
     type Output = S5CounterOutput;
@@ -842,7 +852,12 @@ impl<C: S5CounterOps + Explains<S5CounterKind, S5CounterInput, S5CounterOutput>>
         self.counter.call(self.kind, input)
     }
 
-    fn call_explained(&mut self, now: u64, signals: Signals, pv: CounterPreset) -> Explained<S5CounterOutput> {
+    fn call_explained(
+        &mut self,
+        now: u64,
+        signals: Signals,
+        pv: CounterPreset,
+    ) -> Explained<S5CounterOutput> {
         let input = self.input(signals, pv);
         self.counter
             .explained(self.kind, CpuTime::from_millis(now), input)
