@@ -87,6 +87,20 @@ class AdapterTest(unittest.TestCase):
         rows[2].update(BI=4, BCD=4)
         self.assertIsNone(reference.check("S_PULSE", rows))
 
+    def test_the_command_and_the_package_name_the_same_rules(self):
+        # The command's text, read by the fallback, gives what the package's fields give (the
+        # command does not repeat at the earlier row a rule named at the row).
+        rows = [{"t_ms": 0, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 0},
+                {"t_ms": 200, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 200},
+                {"t_ms": 300, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 301}]
+        cli = reference._cli_check("TON", rows, tv=None, pt=None, pv=None, type="INT",
+                                   optimized=False)
+        self.assertEqual((cli.line, cli.output, cli.earlier_line), (4, "ET", 2))
+        self.assertTrue(cli.rules and cli.earlier_rules)
+        d = reference.check("TON", rows)
+        self.assertEqual((d.line, list(d.rules), d.earlier_line), (cli.line, cli.rules, 2))
+        self.assertEqual([r for r in d.earlier_rules if r not in d.rules], cli.earlier_rules)
+
     def test_literals(self):
         self.assertEqual(reference.s5time_word("S5T#2M7S"), 0x2127)  # LAD manual, Fig. 9-1
         self.assertEqual(reference.s5time_word("W#16#2001"), 0x2001)  # as written
@@ -120,6 +134,20 @@ class DeviationsTest(unittest.TestCase):
         case = deviations.Case("CTU", [{"CU": 1, "R": 0, "PV": 3}], [{"Q": False, "CV": 2}],
                                [{"Q": False, "CV": 1}], "CV", ("CNT-EDGE-01",))
         self.assertIsNone(deviations.classify(case))
+
+    def test_a_named_set_alone_is_not_the_set_deviation(self):
+        # S_CU set to 5 with CU = 0, CU rises two rows later: awlsim counting 2 would be no
+        # documented deviation, though check names the set at the earlier row.
+        rows = [{"CU": 0, "S": 1, "R": 0, "PV": "C#5"}, {"CU": 0, "S": 0, "R": 0, "PV": "C#5"},
+                {"CU": 1, "S": 0, "R": 0, "PV": "C#5"}]
+        case = deviations.Case("S_CU", rows, [{"Q": True, "CV": 7}] * 3,
+                               [{"Q": True, "CV": 6}] * 3, "CV", ("SC-EDGE-01",),
+                               ("SC-SET-01",), 0)
+        self.assertIsNone(deviations.classify(case))
+        held = [{**r, "CU": 1} for r in rows]  # CU held through the set: the deviation
+        case = deviations.Case("S_CU", held, case.got, case.want, "CV", ("SC-EDGE-01",),
+                               ("SC-SET-01",), 0)
+        self.assertEqual(deviations.classify(case).rule, "SC-SET-01")
 
     def lc_case(self, got_bcd, want_bcd, bi=3):
         row = {"t_ms": 0, "S": 1, "R": 0, "TV": "W#16#2005"}
