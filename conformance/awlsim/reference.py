@@ -6,9 +6,11 @@
 ``check(block, rows, **same)``
     The first row where the outputs carried by ``rows`` differ from the reference's, as a
     ``Difference`` (``line`` counts CSV lines, the header is line 1; ``column``, 1-based;
-    ``output``, its name; ``expected``; ``actual``; ``rules``, the requirement IDs deciding that
-    output there; ``what``, what the reference did at that row; ``message``, the whole text),
-    or None.
+    ``output``, its name; ``expected``; ``actual``; ``rules``, the requirement IDs that decided
+    that output at the row (empty when none acted on it there); ``earlier_line`` and
+    ``earlier_rules``, the latest earlier row where rules acted on state that still matters
+    there, and those rules (None and empty when there is none; from the command, less those
+    already in ``rules``, which it does not repeat); ``message``, the whole text), or None.
 
 Both come from the Python package ``plc_timers`` when it is importable (the bindings of the
 crate); otherwise from the command ``plc-timers`` (``run`` and ``check`` over CSV, see
@@ -50,7 +52,8 @@ class Difference:
     expected: str
     actual: str
     rules: list = field(default_factory=list)
-    what: str = ""
+    earlier_line: Optional[int] = None
+    earlier_rules: list = field(default_factory=list)
     message: str = ""
 
 
@@ -157,6 +160,7 @@ def _cli_run(block, rows, *, tv, pt, pv, type, optimized) -> list:
 _DIFF = re.compile(r"DIFFERENT at line (\d+), column (\d+) \(([^)]*)\): "
                    r"the reference gives (.*), the trace has (.*)$")
 _RULE = re.compile(r"^([A-Z0-9]+(?:-[A-Z0-9]+)+): ")
+_EARLIER = re.compile(r"^after line (\d+), where these acted and still matter:$")
 
 
 def _cli_check(block, rows, *, tv, pt, pv, type, optimized) -> Optional[Difference]:
@@ -170,17 +174,26 @@ def _cli_check(block, rows, *, tv, pt, pv, type, optimized) -> Optional[Differen
     m = _DIFF.match(lines[0])
     if m is None:
         raise ValueError(f"plc-timers check {block}: unexpected report: {lines[0]!r}")
-    what = lines[1].removeprefix("at this row: ") if len(lines) > 1 else ""
-    rules = []
-    for line in lines[2:]:
+    # "decided at this row by:" (or a line saying no rule acted), then "ID: text" lines; then
+    # optionally "after line N, where these acted and still matter:" and its "ID: text" lines
+    # (the command does not repeat there a rule named at the row).
+    rules: list = []
+    earlier_line = None
+    earlier: list = []
+    into = rules
+    for line in lines[1:]:
         if line.startswith("rows up to it"):
             break
+        e = _EARLIER.match(line)
+        if e:
+            earlier_line, into = int(e.group(1)), earlier
+            continue
         r = _RULE.match(line)
         if r:
-            rules.append(r.group(1))
+            into.append(r.group(1))
     return Difference(line=int(m.group(1)), column=int(m.group(2)), output=m.group(3),
-                      expected=m.group(4), actual=m.group(5), rules=rules, what=what,
-                      message=proc.stdout)
+                      expected=m.group(4), actual=m.group(5), rules=rules,
+                      earlier_line=earlier_line, earlier_rules=earlier, message=proc.stdout)
 
 
 # --- literal conversions (the command's `s5time` and `time`), for presets given as literals ----

@@ -13,6 +13,7 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 venv=${AWLSIM_VENV:-$repo/target/awlsim-venv}
+case $venv in /*) ;; *) venv=$(pwd)/$venv ;; esac
 export PYTHONDONTWRITEBYTECODE=1
 
 if [ ! -x "$venv/bin/python" ]; then
@@ -27,6 +28,11 @@ if [ -z "${PLC_TIMERS_BIN:-}" ]; then
     (cd "$repo" && cargo build -q -p plc-timers-cli)
     PLC_TIMERS_BIN=$repo/target/debug/plc-timers
 fi
+# A relative path made absolute: the runner works from this directory.
+case $PLC_TIMERS_BIN in
+    /*) ;;
+    */*) PLC_TIMERS_BIN=$(cd "$(dirname "$PLC_TIMERS_BIN")" && pwd)/$(basename "$PLC_TIMERS_BIN") ;;
+esac
 export PLC_TIMERS_BIN
 
 vectors=$(mktemp -d)

@@ -47,7 +47,17 @@ def explain(block: str, rows: list, got: list):
 
 
 def key_of(diff) -> tuple:
-    return tuple(sorted(diff.rules))
+    """The requirements check names: (those that decided at the row, those that acted at the
+    earlier row and still matter, less the former), each sorted."""
+    at_row = tuple(sorted(diff.rules))
+    return at_row, tuple(sorted(set(diff.earlier_rules) - set(at_row)))
+
+
+def named_text(key: tuple) -> str:
+    """A key_of as the report writes it."""
+    at_row, earlier = key
+    text = " + ".join(at_row) or "no requirement at the row"
+    return text + (f", after an earlier row: {' + '.join(earlier)}" if earlier else "")
 
 
 def classify(block: str, rows: list, got: list, diff) -> tuple:
@@ -59,7 +69,9 @@ def classify(block: str, rows: list, got: list, diff) -> tuple:
     if diff.output.upper() != column.upper():
         raise AssertionError(f"{block}: check names output {diff.output}, the first differing "
                              f"output is {column}")
-    case = deviations.Case(block, rows[:i], got[:i], want, column.upper(), key_of(diff))
+    at_row, earlier = key_of(diff)
+    j = None if diff.earlier_line is None else diff.earlier_line - 2
+    case = deviations.Case(block, rows[:i], got[:i], want, column.upper(), at_row, earlier, j)
     dev = deviations.classify(case)
     return (dev.name if dev else None, key_of(diff))
 
@@ -211,7 +223,7 @@ def main(argv=None) -> int:
         g.rows += n_diff
         if not g.example or first + 1 < len(g.example):
             g.example, g.example_name, g.example_line = rows[: first + 1], name, first + 2
-            g.message, g.column = d.what, d.output
+            g.message, g.column = named_text(key_of(d)), d.output
 
     failures = 0
     for g in groups.values():
@@ -224,7 +236,7 @@ def main(argv=None) -> int:
         print(f"{block:8} {st.traces:4} traces {st.rows:6} rows, {st.differing_rows:5} rows "
               f"differ in {st.differing_traces} traces")
     for g in groups.values():
-        name = g.key[0] or "NOT DOCUMENTED (check: " + " + ".join(g.key[1]) + ")"
+        name = g.key[0] or "NOT DOCUMENTED (check: " + named_text(g.key[1]) + ")"
         print(f"  {g.block:8} {name}: {g.traces} traces, {g.rows} rows, minimal trace "
               f"{len(g.minimal)} rows")
     print(f"report: {args.report}  ({time.monotonic() - started:.0f} s, reference: "
@@ -282,16 +294,16 @@ def write_report(args, blocks, stats, groups) -> None:
                                                    g.key[1] or ()))
     for g in order:
         dev, rules = g.key
-        title = dev or f"UNDOCUMENTED (check: {' + '.join(rules) or 'no requirement'})"
+        title = dev or f"UNDOCUMENTED (check: {named_text(rules)})"
         out.append(f"### {g.block}: {title}")
         out.append("")
         out.append(f"{g.traces} traces, {g.rows} differing rows. The requirements `check` "
                    "names at the first difference: " + "; ".join(
-                       f"{' + '.join(r) or 'none'} ({t} traces, {n} rows)"
+                       f"{named_text(r)} ({t} traces, {n} rows)"
                        for r, (t, n) in sorted(g.by_rules.items())) + ".")
         out.append("")
         out.append(f"Shortest first seen in `{g.example_name}`, line {g.example_line}, column "
-                   f"{g.column}; the reference there: {g.message}.")
+                   f"{g.column}; `check` names there: {g.message}.")
         out.append("")
         if dev:
             d = next(x for x in deviations.DOCUMENTED if x.name == dev)

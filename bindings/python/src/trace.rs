@@ -7,6 +7,7 @@
 use std::io::Cursor;
 
 use plc_timers::catalog::{Block, Kind, ValueKind};
+use plc_timers::rule::RuleSet;
 use plc_timers_cli::trace::engine::parse_value;
 use plc_timers_cli::trace::error::show;
 use plc_timers_cli::trace::{
@@ -480,7 +481,8 @@ fn run(
 }
 
 /// The first row where a trace's outputs differ from the reference, and why: the requirement
-/// IDs that decide the reference's value there and the text `plc-timers check` prints.
+/// IDs that decided the reference's value at the row, the earlier row where the rules that
+/// still matter acted (with their IDs), and the text `plc-timers check` prints.
 #[pyclass(module = "plc_timers", name = "Difference", frozen, get_all)]
 pub struct PyDifference {
     /// The row's line (the header is line 1).
@@ -493,10 +495,17 @@ pub struct PyDifference {
     expected: Py<PyAny>,
     /// What the trace has.
     actual: Py<PyAny>,
-    /// The requirement IDs (`spec/requirements/*.toml`) that decide it, the deciding one first.
+    /// The requirement IDs (`spec/requirements/*.toml`) that decided the output at the row, in
+    /// catalog order; empty when no rule acted on it there (it kept an earlier row's value) or
+    /// when the optimized implementation was checked (it explains nothing).
     rules: Vec<String>,
-    /// What happened at that row, in a few words.
-    what: String,
+    /// The latest earlier row where rules acted on state that still matters at the row and
+    /// that `rules` do not cover (the set whose memory made the count, the start of the
+    /// running time, the row where PT was latched); None when there is none.
+    earlier_line: Option<u64>,
+    /// The IDs of the rules that acted at `earlier_line`, in catalog order (empty when None);
+    /// `message` does not repeat there those already in `rules`.
+    earlier_rules: Vec<String>,
     /// The text `plc-timers check` prints: the difference, the rules, the rows up to it.
     message: String,
 }
@@ -506,13 +515,17 @@ impl PyDifference {
     fn __repr__(&self, py: Python<'_>) -> String {
         let show = |v: &Py<PyAny>| v.bind(py).repr().map(|r| r.to_string()).unwrap_or_default();
         format!(
-            "Difference(line={}, column={}, output={:?}, expected={}, actual={}, rules={:?})",
+            "Difference(line={}, column={}, output={:?}, expected={}, actual={}, rules={:?}, \
+             earlier_line={}, earlier_rules={:?})",
             self.line,
             self.column,
             self.output,
             show(&self.expected),
             show(&self.actual),
-            self.rules
+            self.rules,
+            self.earlier_line
+                .map_or_else(|| "None".to_string(), |l| l.to_string()),
+            self.earlier_rules
         )
     }
 
@@ -575,14 +588,16 @@ fn check(
         Some(v) => py_value(py, v)?,
         None => d.found.clone().into_pyobject(py)?.into_any().unbind(),
     };
+    let ids = |rules: RuleSet| rules.iter().map(|r| r.to_string()).collect::<Vec<_>>();
     Ok(Some(PyDifference {
         line: d.line,
         column: d.column,
         output: d.output.to_string(),
         expected: py_value(py, d.expected)?,
         actual,
-        rules: d.why.rules.iter().map(|r| r.to_string()).collect(),
-        what: d.why.what.clone(),
+        rules: ids(d.why.rules),
+        earlier_line: d.why.earlier.map(|(line, _)| line),
+        earlier_rules: d.why.earlier.map_or_else(Vec::new, |(_, rules)| ids(rules)),
         message: d.to_string(),
     }))
 }

@@ -264,7 +264,11 @@ def test_check_some_outputs_and_tuples() -> None:
     d = plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], outputs=["Q"], pt=500)
     assert d is not None
     assert (d.line, d.column, d.output, d.expected, d.actual) == (4, 3, "Q", False, True)
-    assert d.rules and d.what and d.message.startswith("DIFFERENT at line 4, column 3 (Q)")
+    assert d.message.startswith("DIFFERENT at line 4, column 3 (Q)")
+    # IN falls at line 4: TON-IN-01 resets Q there; the Q = 1 the trace keeps was made by the
+    # expiry at line 3 (500 ms = PT), which still matters.
+    assert d.rules == ["TON-IN-01"]
+    assert (d.earlier_line, d.earlier_rules) == (3, ["IEC-EXPIRY-01"])
     with pytest.raises(plc_timers.TraceError, match="the trace has no `ET` column"):
         plc_timers.check("TON", rows, columns=["t_ms", "IN", "Q"], pt=500)
     with pytest.raises(plc_timers.TraceError) as e:

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import subprocess
 from pathlib import Path
-from typing import Any, Dict, List, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import plc_timers
 import pytest
@@ -136,6 +136,79 @@ def test_check_message_is_the_command_s(cli: Path, tmp_path: Path) -> None:
     assert done.returncode == 1
     assert done.stdout == d.message
     assert str(d) == d.message
+    assert named(d) == why_in_message(done.stdout)
+
+
+def named(d: plc_timers.Difference) -> Tuple[List[str], Optional[int], List[str]]:
+    """The rules of a Difference as the command prints them: it does not repeat at the earlier
+    row a rule it named at the row."""
+    return d.rules, d.earlier_line, [r for r in d.earlier_rules if r not in d.rules]
+
+
+def why_in_message(message: str) -> Tuple[List[str], Optional[int], List[str]]:
+    """The rules `plc-timers check` prints: those that decided at the row, and the earlier row
+    with the rules that acted there and still matter (its `ID: text` lines)."""
+    rules: List[str] = []
+    earlier_line: Optional[int] = None
+    earlier: List[str] = []
+    into: Optional[List[str]] = None
+    for line in message.splitlines()[1:]:
+        if line == "decided at this row by:":
+            into = rules
+        elif line.startswith("after line ") and line.endswith(", where these acted and still matter:"):
+            earlier_line = int(line[len("after line ") :].split(",")[0])
+            into = earlier
+        elif line.startswith("rows up to it"):
+            break
+        elif into is not None and ": " in line and not line.startswith(" "):
+            into.append(line.split(": ", 1)[0])
+        else:
+            into = None
+    return rules, earlier_line, earlier
+
+
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.csv")), ids=lambda p: p.stem)
+def test_check_names_the_rules_the_command_names(cli: Path, path: Path, tmp_path: Path) -> None:
+    """An example trace with one output changed at each of its last rows: `check`'s rules and
+    earlier row are those in the text `plc-timers check` prints, and that text is the message."""
+    words = example_command(path)
+    block, options = words[1], words[2:-1]
+    kwargs: Dict[str, str] = {}
+    for name, val in zip(options[::2], options[1::2]):
+        kwargs[name.lstrip("-")] = val
+    header, rows = read_trace(path)
+    presets: Dict[str, Any] = {
+        "tv": kwargs.get("tv"),
+        "pt": kwargs.get("pt"),
+        "pv": kwargs.get("pv"),
+        "type": kwargs.get("type", "INT"),
+    }
+    reference = plc_timers.run(block, as_dicts(header, rows), **presets)
+    outputs = list(reference[0])
+    for k in range(max(0, len(rows) - 3), len(rows)):
+        # The first output of row k, changed (a bit flipped, a number one more).
+        name = outputs[0]
+        value = reference[k][name]
+        wrong: Union[bool, int] = (not value) if isinstance(value, bool) else value + 1
+        table: List[Dict[str, Any]] = [
+            {**dict(zip(header, row)), **out, **({name: wrong} if j == k else {})}
+            for j, (row, out) in enumerate(zip(rows, reference))
+        ]
+        d = plc_timers.check(block, table, **presets)
+        assert d is not None
+        assert (d.line, d.output, d.expected) == (k + 2, name, value)
+        cells = [[str(int(v)) if isinstance(v, bool) else str(v) for v in r.values()] for r in table]
+        trace = tmp_path / f"{path.stem}-{k}.csv"
+        trace.write_text("\n".join(",".join(r) for r in [list(table[0]), *cells]) + "\n")
+        command = [str(cli), "check", *words[1:-1], str(trace)]
+        done = subprocess.run(command, capture_output=True, text=True)
+        assert done.returncode == 1, done.stderr
+        assert d.message == done.stdout
+        assert named(d) == why_in_message(done.stdout)
+        assert d.rules or "no rule acted" in d.message
+        assert d.earlier_line is None or 2 <= d.earlier_line < d.line
+        if d.earlier_line is None:
+            assert d.earlier_rules == []
 
 
 @pytest.mark.parametrize(
