@@ -84,4 +84,17 @@ build openplc_ton examples/c/openplc_ton.c
 run "$work/openplc_ton" >"$work/openplc_ton.csv"
 cargo run -q --release -- run TON --pt T#500ms examples/traces/ton.csv | diff - "$work/openplc_ton.csv"
 cat "$work/openplc_ton.csv"
+echo "== bindings/c: the README's C example compiles against the header"
+# The block after the README's link line: its first line is the #include; the rest is scan
+# code, wrapped here in a function that declares the runtime's names it uses.
+awk '/^```c$/ {p = 1; next} /^```$/ {p = 0} p' README.md >"$work/readme.c.in"
+{
+    head -n 1 "$work/readme.c.in"
+    echo 'bool readme_example(bool button, uint64_t now_ms) {'
+    echo '    bool lamp = false;'
+    tail -n +2 "$work/readme.c.in"
+    echo '    return lamp;'
+    echo '}'
+} >"$work/readme.c"
+cc -std=c11 -Wall -Wextra -Werror -Ibindings/c/include -c "$work/readme.c" -o "$work/readme.o"
 echo "bindings/c: all checks passed"

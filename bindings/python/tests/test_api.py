@@ -25,6 +25,13 @@ def test_doctests() -> None:
     assert result.failed == 0
 
 
+def test_readme_block_is_the_example() -> None:
+    """The repository README's Python block is examples/readme.py, which the next test runs."""
+    readme = (HERE.parents[2] / "README.md").read_text()
+    block = readme.split("```python\n", 1)[1].split("```", 1)[0]
+    assert block == (HERE.parent / "examples" / "readme.py").read_text()
+
+
 def test_readme_example_prints_its_comments() -> None:
     """examples/readme.py (the README's example) prints what its comments say."""
     path = HERE.parent / "examples" / "readme.py"
