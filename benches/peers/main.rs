@@ -669,6 +669,19 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
         }),
         copy_floor("copy of the TonBank state", size_of::<TonBank<BANK>>()),
         copy_floor("copy of the IecTimer array", BANK * size_of::<IecTimer>()),
+        // The per-instance floor: the loop above with a call that only takes its inputs into
+        // its 16 bytes and passes on an output of the IecOutput's size, no rule. No form that
+        // calls one instance at a time in its own data does less.
+        per_instance!(
+            "per-instance floor",
+            [0u32; 4],
+            pt_ms,
+            |t, input, pt, now| {
+                t[0] = u32::from(input) ^ now as u32;
+                t[1] = pt as u32;
+                (input, t[2])
+            }
+        ),
     ];
     run_group(c, &group_name(family, TON_BANK), ws);
 }
@@ -756,6 +769,22 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
             }
         ),
     ];
+    // The per-instance floor: the loop above with a call that only takes the inputs it reads
+    // into the byte after CV of a 4-byte cell (`Counter<i16>`'s size) and passes the cell on, no
+    // rule. No form that calls one instance at a time in its own data does less.
+    ws.push(per_instance!("per-instance floor", 0u32, |t, s, i| {
+        let edges = if UP_ONLY {
+            u32::from(s[0][i]) | u32::from(s[2][i]) << 2
+        } else {
+            u32::from(s[0][i])
+                | u32::from(s[1][i]) << 1
+                | u32::from(s[2][i]) << 2
+                | u32::from(s[3][i]) << 3
+        };
+        // CV kept, the byte after it replaced: one 4-byte store, no partial write.
+        *t = *t & 0xFFFF | edges << 16;
+        *t
+    }));
     if up_only {
         ws.push(per_instance!(
             "RuSTy (array)",
@@ -998,6 +1027,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "RuSTy (array)",
                 "matiec (array)",
                 "copy of the IecTimer array",
+                "per-instance floor",
             ],
         ),
         (
@@ -1008,6 +1038,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "optimized (CounterBank)",
                 "optimized (Counter array, call)",
                 "optimized (Counter array, call_for_arrays)",
+                "per-instance floor",
             ],
         ),
         (
@@ -1020,6 +1051,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "optimized (Counter array, call_for_arrays)",
                 "RuSTy (array)",
                 "matiec (array)",
+                "per-instance floor",
             ],
         ),
         (
@@ -1084,6 +1116,20 @@ fn summary(family: Family, tally: &mut Tally) {
             ),
             |v| v >= 2.0,
         );
+    }
+    // What a per-instance form can reach at most: the reference against the loop that only
+    // moves each instance's inputs, state and outputs (not a goal; it says how far off one is).
+    for (group, reference) in [
+        (TON_BANK, "reference (IecTimerRef array)"),
+        (CTUD_BANK, "reference (CounterRef array)"),
+        (CTU_BANK, "reference (CounterRef array)"),
+    ] {
+        if let Some(v) = ratio(
+            &format!("{group}/{reference}"),
+            &format!("{group}/per-instance floor"),
+        ) {
+            println!("  (bound, not a goal: {reference} / per-instance floor, {group}: {v:.2}x)");
+        }
     }
     goal(
         "TonBank scan / copy of its state (<= 2.5x)",
