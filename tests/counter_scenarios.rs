@@ -152,6 +152,23 @@ fn absent_inputs_are_ignored() {
     assert_eq!(ctd.call(true, false, true, false, 9).cv, 0);
 }
 
+/// The input builders set the one input they name and keep the others (the command-line tool
+/// and the bindings build every row's inputs through them).
+#[test]
+fn input_builders_set_one_input() {
+    let base = CounterInput::new(true, true, 7i16);
+    for (r, ld) in [(false, false), (true, false), (false, true), (true, true)] {
+        let i = base.with_r(r).with_ld(ld);
+        assert_eq!(
+            (i.cu, i.cd, i.r, i.ld, i.pv),
+            (true, true, r, ld, 7),
+            "with_r({r}).with_ld({ld})"
+        );
+        let back = i.with_r(!r).with_ld(!ld);
+        assert_eq!((back.r, back.ld), (!r, !ld), "builders overwrite");
+    }
+}
+
 /// QD = CV <= 0 for unsigned types means CV = 0.
 #[test]
 fn unsigned_qd_at_zero() {
