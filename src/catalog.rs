@@ -103,8 +103,8 @@ macro_rules! ports {
         }
 
         impl Port {
-            /// Every port, the inputs first.
-            pub const ALL: [Port; 18] = [$(Port::$port),*];
+            /// Every port, the inputs (and the `RT` coil) first.
+            pub const ALL: [Port; 19] = [$(Port::$port),*];
 
             /// The name as the manual's box writes it (`S`, `TV`, `IN`, `CV_BCD`, …).
             pub const fn name(self) -> &'static str {
@@ -131,6 +131,9 @@ ports! {
     Cu = "CU", Bool, "`CU`: count up.";
     Cd = "CD", Bool, "`CD`: count down.";
     Ld = "LD", Bool, "`LD` (`LOAD`): load PV into CV.";
+    Rt = "RT", Bool, "`RT`: the `-(RT)-` coil on the IEC timer's instance data (IEC-RT-01), run \
+        before the box in the same scan; not a box input but one of the block's \
+        [`Block::coils`], so a trace may leave its column out (absent means 0).";
     Tv = "TV", Preset, "`TV`: the S5 timers' time value (an S5TIME).";
     Pt = "PT", Preset, "`PT`: the IEC timers' preset time (a TIME).";
     Pv = "PV", Preset, "`PV`: the counters' preset value.";
@@ -161,11 +164,12 @@ pub struct Preset {
     pub kind: PresetKind,
 }
 
-use Port::{Bcd, Bi, Cd, Cu, Cv, CvBcd, Et, Fr, In, Ld, Pt, Pv, Qd, Qu, Tv, Q, R, S};
+use Port::{Bcd, Bi, Cd, Cu, Cv, CvBcd, Et, Fr, In, Ld, Pt, Pv, Qd, Qu, Rt, Tv, Q, R, S};
 
 const S5_TIMER_IN: &[Port] = &[S, R, Fr, Tv];
 const IEC_TIMER_IN: &[Port] = &[In, Pt];
 const TONR_IN: &[Port] = &[In, R, Pt];
+const IEC_TIMER_COILS: &[Port] = &[Rt];
 const CTU_IN: &[Port] = &[Cu, R, Pv];
 const CTD_IN: &[Port] = &[Cd, Ld, Pv];
 const CTUD_IN: &[Port] = &[Cu, Cd, R, Ld, Pv];
@@ -321,6 +325,25 @@ impl Block {
             Block::SCu => S_CU_IN,
             Block::SCd => S_CD_IN,
             Block::SCud => S_CUD_IN,
+        }
+    }
+
+    /// The coils that act on the block's instance data, besides its box inputs: `[RT]` for the
+    /// IEC timers (the `-(RT)-` coil, IEC-RT-01), none for the other blocks. A trace may carry
+    /// a column for each (absent means 0); a row with a coil at 1 runs the coil before the box
+    /// call, as a network above the box's network would. They are not among
+    /// [`Block::inputs`], which are the box's own.
+    ///
+    /// ```
+    /// use plc_timers::catalog::{Block, Port};
+    /// assert_eq!(Block::Tof.coils(), [Port::Rt]);
+    /// assert!(!Block::Tof.has_input(Port::Rt)); // a coil, not a box input
+    /// assert!(Block::SOdt.coils().is_empty() && Block::Ctu.coils().is_empty());
+    /// ```
+    pub const fn coils(self) -> &'static [Port] {
+        match self.family() {
+            Family::IecTimer => IEC_TIMER_COILS,
+            _ => &[],
         }
     }
 

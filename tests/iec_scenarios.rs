@@ -331,7 +331,7 @@ fn rt_coil_lecture_restarts_ton() {
     assert_eq!(t.call(260, true, 100), out(true, 100));
 }
 
-/// IEC-RT-02 (decision): RT on a running TP ends the pulse; on a running TOF ends the delay.
+/// IEC-RT-01 (decision): RT on a running TP ends the pulse; on a running TOF ends the delay.
 #[test]
 fn rt_coil_on_running_tp_and_tof() {
     let mut tp = Both::new(IecKind::Tp);
@@ -347,6 +347,25 @@ fn rt_coil_on_running_tp_and_tof() {
         out(false, 0),
         "no falling edge after RT: stays off"
     );
+}
+
+/// IEC-RT-01: RT clears the stored IN, so a TP whose IN is still 1 sees a rising edge at its
+/// next call and starts a new pulse of PT, running or expired before the coil.
+#[test]
+fn rt_coil_tp_with_in_held_starts_a_new_pulse() {
+    let mut tp = Both::new(IecKind::Tp);
+    tp.call(0, true, 100);
+    assert_eq!(tp.call(40, true, 100), out(true, 40));
+    tp.rt();
+    assert_eq!(tp.call(50, true, 100), out(true, 0), "a new pulse from 50");
+    assert_eq!(
+        tp.call(120, true, 100),
+        out(true, 70),
+        "the old one ended at 100"
+    );
+    assert_eq!(tp.call(150, true, 100), out(false, 100));
+    tp.rt();
+    assert_eq!(tp.call(160, true, 100), out(true, 0), "after expiry too");
 }
 
 /// IEC-PT-COIL-01: the PT coil loads the preset, which a running timer uses from its next update.

@@ -6,7 +6,8 @@
 #   tests/status.c        every status code, the IEC timers' structure operations, the memory
 #                         areas' STL operations;
 #   tests/vectors.c       every vector file of `plc-timers vectors` through every form, every
-#                         output compared (and a corrupted copy must fail);
+#                         output compared, the RT column applied through the C API's reset
+#                         (and a corrupted copy must fail);
 #   examples/c/openplc_ton.c   prints what `plc-timers run TON --pt T#500ms` prints.
 #
 # Needs a C compiler (`cc`) and valgrind. valgrind comes from Debian's packages: when it is

@@ -115,7 +115,8 @@ struct BlockArgs {
     preset: PresetArg,
     #[arg(help = block_help(), value_parser = parse_block)]
     block: Block,
-    /// The trace (CSV); standard input when absent or `-`.
+    /// The trace (CSV: `t_ms`, the block's inputs and preset; the IEC timers also take `RT`, the
+    /// -(RT)- coil, run before the box call of its row); standard input when absent or `-`.
     file: Option<PathBuf>,
     #[arg(long = "type", value_parser = IntType::parse,
           help = format!("IEC counters: the integer type of CV and PV: {} (default INT)", IntType::names()))]

@@ -187,6 +187,105 @@ fn cli_check_output_selection() {
     }
 }
 
+/// IEC-RT-01, CLI-RUN-01: the `RT` column is the -(RT)- coil, run before the box call of its
+/// row; it is echoed by `run`, drawn by `diagram` and dumped by `vcd`; only the IEC timers
+/// take it.
+#[test]
+fn rt_column_is_the_coil_before_the_call() {
+    let trace = "t_ms,IN,RT\n0,1,0\n3,1,0\n4,1,1\n8,1,0\n9,1,0\n10,0,1\n";
+    // By hand from IEC-RT-01 and TON's rules with PT = 5: START = 0; at 4 the coil clears the
+    // data (the stored IN too), so IN = 1 is a rising edge: START = 4, ET 0; ET 4 at 8, Q = 1
+    // with ET = 5 at 9; at 10 the coil and IN = 0 both leave Q = 0, ET 0.
+    let expected =
+        "t_ms,IN,RT,Q,ET\n0,1,0,0,0\n3,1,0,0,3\n4,1,1,0,0\n8,1,0,0,4\n9,1,0,1,5\n10,0,1,0,0\n";
+    for imp in [Implementation::Reference, Implementation::Optimized] {
+        assert_eq!(
+            run_str(ton().with(imp), trace.as_bytes(), pt("5")).as_deref(),
+            Ok(expected),
+            "{imp:?}"
+        );
+    }
+    // Without the column, or with it at 0 throughout, the trace runs as the box alone.
+    let zeros = "t_ms,IN,RT\n0,1,0\n3,1,0\n5,1,0\n";
+    let plain = run_str(ton(), b"t_ms,IN\n0,1\n3,1\n5,1\n", pt("5")).expect("valid");
+    let with = run_str(ton(), zeros.as_bytes(), pt("5")).expect("valid");
+    let strip = |t: &str| -> Vec<String> {
+        t.lines()
+            .map(|l| {
+                let f: Vec<&str> = l.split(',').collect();
+                [&f[..2], &f[f.len() - 2..]].concat().join(",")
+            })
+            .collect()
+    };
+    assert_eq!(
+        strip(&with),
+        plain.lines().map(String::from).collect::<Vec<_>>()
+    );
+    // check agrees with run's output, and finds a port that ignores the coil.
+    let report = check(ton(), pt("5"), None, expected.as_bytes()).expect("valid");
+    assert_eq!((report.rows, report.difference), (6, None));
+    let ignored = expected.replace("4,1,1,0,0", "4,1,1,0,4");
+    let d = check(ton(), pt("5"), None, ignored.as_bytes())
+        .expect("valid")
+        .difference
+        .expect("a difference");
+    assert_eq!((d.line, d.output), (4, "ET"));
+    assert!(
+        d.why.rules.contains(plc_timers::rule::Rule::IEC_RT_01),
+        "{d}"
+    );
+    // diagram: a waveform lane RT; vcd: a 1-bit wire RT that is 1 at 4 and 10.
+    let mut svg = Vec::new();
+    diagram::svg(
+        ton(),
+        pt("5"),
+        trace.as_bytes(),
+        Window::default(),
+        &mut svg,
+    )
+    .expect("draws");
+    let svg = String::from_utf8(svg).expect("UTF-8");
+    assert!(svg.contains("class=\"signal\" data-name=\"RT\""), "{svg}");
+    let mut dump = Vec::new();
+    vcd::export(ton(), pt("5"), trace.as_bytes(), &mut dump).expect("dumps");
+    let dump = String::from_utf8(dump).expect("UTF-8");
+    let id = dump
+        .lines()
+        .find_map(|l| l.strip_prefix("$var wire 1 ")?.strip_suffix(" RT $end"))
+        .unwrap_or_else(|| panic!("no RT wire in\n{dump}"));
+    let rt_changes: Vec<&str> = dump
+        .lines()
+        .filter(|l| l.len() == 1 + id.len() && l.ends_with(id))
+        .collect();
+    assert_eq!(
+        rt_changes,
+        [
+            format!("0{id}"),
+            format!("1{id}"),
+            format!("0{id}"),
+            format!("1{id}")
+        ]
+    );
+    // Errors: RT twice; RT on a block without the coil, at its cell, naming who has it.
+    let e = run_str(ton(), b"t_ms,RT,IN,rt\n", pt("5")).expect_err("RT twice");
+    assert!(e.message.contains("appears twice"), "{e}");
+    let sd = BlockSpec::new(Block::SOdt);
+    let tv = Some(PresetValue::parse(sd, "S5T#20MS").expect("a TV"));
+    let e = run_str(sd, b"t_ms,S,RT\n0,1,1\n", tv).expect_err("no RT on S_ODT");
+    assert_eq!(
+        e.to_string(),
+        "line 1, column 3 (RT): `RT` is the -(RT)- coil, which only TP, TON, TOF, TONR have; \
+         S_ODT takes the columns t_ms, S, R, FR, TV"
+    );
+    // An IEC timer's unknown column lists RT among its columns.
+    let e = run_str(ton(), b"t_ms,IN,X\n", pt("5")).expect_err("unknown");
+    assert!(
+        e.message
+            .ends_with("TON takes the columns t_ms, IN, PT, RT"),
+        "{e}"
+    );
+}
+
 /// CLI-DIAG-02: times at the end of the u64 range, in the exact and in the bucket mode, and a
 /// window of one instant draw without overflow.
 #[test]
@@ -239,6 +338,7 @@ fn csvish() -> impl Strategy<Value = Vec<u8>> {
     let header = prop_oneof![
         Just("t_ms,IN\n"),
         Just("t_ms,IN,PT\n"),
+        Just("t_ms,IN,RT\n"),
         Just("IN,t_ms\r\n"),
         Just("t_ms,S,R,FR,TV\n"),
         Just("CU,CD,R,LD,PV\n"),

@@ -166,6 +166,25 @@ fn rusty_ctud_edge_memory_frozen_under_r() {
     assert!(earlier.contains(Rule::CNT_EDGE_01), "{w:?}");
 }
 
+/// A runtime that reads the S7-1200 manual's RT sentence as "ELAPSED only" (spec/iec.md W3,
+/// reading (a)) zeroes ET in the RT row but keeps START: at its next update ET is the time since
+/// the old start again, and its TON switches on 200 ms after the first start. The reference
+/// zeroed the timer data at line 4 (IEC-RT-01), so IN = 1 there started the time again.
+#[test]
+fn rt_resets_elapsed_only() {
+    let trace = "t_ms,IN,RT,PT,Q,ET\n\
+                 0,1,0,T#200MS,0,0\n\
+                 100,1,0,T#200MS,0,100\n\
+                 150,1,1,T#200MS,0,0\n\
+                 200,1,0,T#200MS,1,200\n";
+    let w = why(Block::Ton, None, trace, 5);
+    decided_at_row(&w, Rule::IEC_EXPIRY_01);
+    let (line, earlier) = w.earlier.expect("the RT row");
+    assert_eq!(line, 4, "{w:?}");
+    assert!(earlier.contains(Rule::IEC_RT_01), "{w:?}");
+    assert!(earlier.contains(Rule::IEC_START_01), "{w:?}");
+}
+
 /// The optimized implementation gives no rules, and `check` says so instead of naming any.
 #[test]
 fn optimized_check_names_no_rule() {

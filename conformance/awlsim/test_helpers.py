@@ -107,6 +107,17 @@ class AdapterTest(unittest.TestCase):
         self.assertEqual(reference.time_ms("T#2s_200ms"), 2200)
 
 
+class TracesTest(unittest.TestCase):
+    def test_a_vector_is_run_up_to_its_first_rt_row(self):
+        # awlsim's SFBs have no -(RT)- coil: the rows from the first RT = 1 on are not run, and
+        # the column is dropped (RT = 0 rows are the box alone).
+        rows = [{"t_ms": 0, "IN": 1, "RT": 0}, {"t_ms": 5, "IN": 1, "RT": 0},
+                {"t_ms": 9, "IN": 1, "RT": 1}, {"t_ms": 12, "IN": 1, "RT": 0}]
+        self.assertEqual(traces.before_coil(rows),
+                         [{"t_ms": 0, "IN": 1}, {"t_ms": 5, "IN": 1}])
+        self.assertEqual(traces.before_coil([{"t_ms": 0, "IN": 1}]), [{"t_ms": 0, "IN": 1}])
+
+
 class ShrinkTest(unittest.TestCase):
     def test_a_padded_trace_shrinks_to_its_core(self):
         import runner

@@ -18,7 +18,12 @@ BLOCKS = ["S_PULSE", "S_PEXT", "S_ODT", "S_ODTS", "S_OFFDT", "TP", "TON", "TOF",
 NOT_RUN = {
     "TONR": "awlsim has no TONR (its IEC blocks are the S7-300/400 SFB 0..5)",
     "IEC counters other than INT": "awlsim's SFB 0, 1, 2 have an INT PV and CV only",
+    "the RT coil": "awlsim's SFB 3, 4, 5 have no -(RT)- coil (S7-300/400), so the rows of a "
+                   "vector from its first row with RT = 1 on are not run",
 }
+
+#: The coil column of the IEC timers' vectors (spec/cli.md, "Traces"), which awlsim cannot run.
+COIL = "RT"
 
 
 def read_csv(path: Path) -> list:
@@ -48,8 +53,20 @@ def vector_traces(vectors: Path) -> list:
         for path in sorted(folder.glob("*.csv")):
             rows = [{k: _cell(v) for k, v in r.items() if k.upper() not in reference.OUTPUTS}
                     for r in read_csv(path)]
+            rows = before_coil(rows)
             if rows:
                 out.append((block, f"vectors/{folder.name}/{path.name}", rows))
+    return out
+
+
+def before_coil(rows: list) -> list:
+    """The rows before the first one with the RT coil at 1, without the RT column: what awlsim
+    can run of a vector (NOT_RUN); the rows after it depend on the coil's effect."""
+    out = []
+    for r in rows:
+        if r.get(COIL, 0):
+            break
+        out.append({k: v for k, v in r.items() if k != COIL})
     return out
 
 

@@ -306,6 +306,28 @@ impl<C: ClockWord> IecTimerRef<C> {
         let o = self.call_rec(kind, now, input, &mut rec);
         rec.finish(o)
     }
+
+    /// [`IecTimerOps::reset_timer`] (the `-(RT)-` coil), explained: the same action, and the
+    /// rules that acted on the state, [`Rule::IEC_RT_01`] (ET and Q cleared, the timer stopped,
+    /// the stored IN cleared). The coil has no box outputs of its own: the ET and Q it leaves
+    /// are what the next call or access starts from.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
+    /// use plc_timers::rule::{Rule, RuleSet};
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let pt = plc_timers::time!("T#100MS");
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, pt));
+    /// assert_eq!(ton.reset_timer_explained(), RuleSet::of(Rule::IEC_RT_01));
+    /// let state = ton.state();
+    /// assert!(!state.running && !state.input && state.et == 0 && state.pt == 100);
+    /// ```
+    pub fn reset_timer_explained(&mut self) -> RuleSet {
+        self.reset_timer();
+        RuleSet::of(Rule::IEC_RT_01)
+    }
 }
 
 impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {

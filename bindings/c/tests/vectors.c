@@ -3,7 +3,8 @@
  *
  * Usage: vectors DIR, where DIR holds the vectors `plc-timers vectors DIR` writes: one
  * directory per block (IEC counters: per integer type, e.g. CTUD-SINT), CSV files whose columns
- * are the inputs, the preset and the reference outputs (spec/cli.md, README.txt of DIR).
+ * are the inputs, the preset and the reference outputs (spec/cli.md, README.txt of DIR); the IEC
+ * timers' files may have an RT column, the -(RT)- coil, applied with the C API's reset.
  *
  * Every row runs through every form of the block, each on its own state: the reference and the
  * optimized form, and for the S5 timers and counters also a box call on a memory area. The
@@ -24,7 +25,7 @@
 #define MAX_FIELDS 16
 #define MAX_REPORTS 20
 
-static unsigned long files, rows, comparisons, failures;
+static unsigned long files, rows, comparisons, failures, rt_rows;
 
 /* One CSV file: its header and the current row, split into fields. */
 typedef struct {
@@ -195,12 +196,15 @@ static void replay_s5_timer(const char *path, int kind) {
 }
 
 /* ------------------------------------------------------------------------------------------ */
-/* IEC timers: reference and optimized (IEC_TIMER). */
+/* IEC timers: reference and optimized (IEC_TIMER). A row with RT = 1 (the optional column of
+ * the -(RT)- coil, spec/cli.md "Traces") runs the coil before the box call, as a network above
+ * the box's network would. */
 
 static void replay_iec_timer(const char *path, int kind) {
     csv c;
     csv_open(&c, path);
     int t = required(&c, "t_ms"), in_col = required(&c, "IN"), r = column(&c, "R");
+    int rt = column(&c, "RT");
     int pt = required(&c, "PT"), q = required(&c, "Q"), et = required(&c, "ET");
     plc_timers_iec_timer_ref ref;
     plc_timers_iec_timer opt;
@@ -211,6 +215,11 @@ static void replay_iec_timer(const char *path, int kind) {
         if (plc_timers_time_parse(c.field[pt], &in.pt, NULL) != PLC_TIMERS_OK)
             die(c.path, c.line, "PT is not a TIME literal");
         uint64_t now = cell_u64(&c, t);
+        if (cell_bool(&c, rt)) {
+            check_status(&c, "reference RT", plc_timers_iec_timer_ref_reset(&ref));
+            check_status(&c, "optimized RT", plc_timers_iec_timer_reset(&opt));
+            rt_rows++;
+        }
         plc_timers_iec_output out[2];
         check_status(&c, "reference", plc_timers_iec_timer_ref_call(&ref, kind, now, in, &out[0]));
         check_status(&c, "optimized", plc_timers_iec_timer_call(&opt, kind, now, in, &out[1]));
@@ -392,7 +401,10 @@ int main(int argc, char **argv) {
         if (!known) die(e->d_name, 0, "a vectors directory this test does not replay");
     }
     closedir(top);
-    printf("%lu files, %lu rows, %lu outputs compared, %lu differences\n", files, rows,
-           comparisons, failures);
+    printf("%lu files, %lu rows (%lu with the RT coil), %lu outputs compared, %lu differences\n",
+           files, rows, rt_rows, comparisons, failures);
+    /* The IEC timers' decisions.csv set the RT coil: a replay that never applied it did not
+     * replay them. */
+    if (rt_rows == 0) die(argv[1], 0, "no row with RT = 1: the RT column was not replayed");
     return failures ? 1 : 0;
 }

@@ -411,7 +411,8 @@ fn py_value(py: Python<'_>, v: Value) -> PyResult<Py<PyAny>> {
 /// `plc-timers run` computes them.
 ///
 /// `rows`: dicts (column name -> value) or tuples with `columns=`; the columns are those of
-/// the command line's traces (`t_ms`, the block's inputs, optionally its preset). Presets:
+/// the command line's traces (`t_ms`, the block's inputs, optionally its preset; the IEC
+/// timers optionally `RT`, the `-(RT)-` coil, run before the box call of its row). Presets:
 /// `tv` (S5 timers), `pt` (IEC timers), `pv` (counters) as literals or ints; `type`: the IEC
 /// counters' integer type. Bad rows raise `TraceError` with `line` (header = 1) and `column`.
 ///

@@ -261,6 +261,36 @@ def test_trace_errors_name_line_and_column() -> None:
         plc_timers.run("TON", [{"t_ms": 0, "IN": 1}, {"t_ms": 1}], pt=1)
 
 
+def test_rt_column_is_the_rt_coil_before_the_call() -> None:
+    """A trace's RT column (spec/cli.md, "Traces") is the -(RT)- coil run before the box call of
+    its row: `run` gives what the block object gives with `reset_timer()` before `call`, and
+    `check` names IEC-RT-01 at a row with RT = 1 whose outputs ignore the coil."""
+    rows = [(0, 0, 0), (100, 1, 0), (300, 1, 0), (350, 1, 1), (500, 1, 0), (850, 1, 0)]
+    for block in ("TP", "TON", "TOF", "TONR"):
+        for optimized in (False, True):
+            got = plc_timers.run(
+                block, rows, columns=["t_ms", "IN", "RT"], pt=500, optimized=optimized
+            )
+            timer = getattr(plc_timers, block)(pt=500, optimized=optimized)
+            want: list[dict[str, bool | int]] = []
+            for t, in_, rt in rows:
+                if rt:
+                    timer.reset_timer()
+                o = timer.call(t, in_=bool(in_))
+                want.append({"Q": o.q, "ET": o.et})
+            assert got == want, (block, optimized)
+    # A TON port that ignores RT goes on timing from 100 ms: ET 250 where the reference has 0.
+    port = [(0, 0, 0, 0, 0), (100, 1, 0, 0, 0), (300, 1, 0, 0, 200), (350, 1, 1, 0, 250)]
+    d = plc_timers.check("TON", port, columns=["t_ms", "IN", "RT", "Q", "ET"], pt=500)
+    assert d is not None
+    assert (d.line, d.output, d.expected, d.actual) == (5, "ET", 0, 250)
+    assert "IEC-RT-01" in d.rules
+    with pytest.raises(plc_timers.TraceError) as e:
+        plc_timers.run("CTU", [(1, 1)], columns=["CU", "RT"], pv=3)
+    assert (e.value.line, e.value.column, e.value.column_name) == (1, 2, "RT")
+    assert "only TP, TON, TOF, TONR have" in e.value.message
+
+
 def test_readme_example_runs_in_process() -> None:
     runpy.run_path(str(HERE.parent / "examples" / "readme.py"), run_name="__main__")
 

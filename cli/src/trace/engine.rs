@@ -10,7 +10,9 @@ use std::io::{Read, Write};
 use plc_timers::catalog::{Block, Port, ValueKind};
 
 use super::error::{show, Error, Location, TraceError};
-use super::family::{dispatch, Adapter, BlockSpec, Outputs, PresetValue, Signals, Value, Visit};
+use super::family::{
+    dispatch, names_of, Adapter, BlockSpec, Outputs, PresetValue, Signals, Value, Visit,
+};
 use super::reader::{Reader, Record};
 use plc_timers::rule::{RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
 
@@ -87,6 +89,11 @@ impl Layout {
                 .outputs()
                 .iter()
                 .position(|p| p.name().eq_ignore_ascii_case(name));
+            // A coil (RT) is read as a boolean input; its bit follows the inputs'.
+            let coil = block
+                .coils()
+                .iter()
+                .position(|p| p.name().eq_ignore_ascii_case(name));
             let duplicate = if name.eq_ignore_ascii_case(TIME_COLUMN) {
                 layout.time.replace(i).is_some()
             } else if let Some(k) = input {
@@ -98,6 +105,12 @@ impl Layout {
                     _ => layout.preset = Some(i),
                 }
                 again
+            } else if let Some(k) = coil {
+                let bit = block.inputs().len() + k;
+                let again = seen_inputs >> bit & 1 == 1;
+                seen_inputs |= 1 << bit;
+                layout.bools.push((i, block.coils()[k]));
+                again
             } else if let (Some(k), Mode::WithOutputs) = (output, mode) {
                 let again = layout.outputs.iter().any(|&(_, o)| o == k);
                 layout.outputs.push((i, k));
@@ -106,6 +119,14 @@ impl Layout {
                 return Err(here(format!(
                     "`{name}` is an output of {block}; this command reads inputs only \
                      (`plc-timers check` compares outputs)"
+                )));
+            } else if let Some(port) = coil_elsewhere(name) {
+                return Err(here(format!(
+                    "`{}` is the {} coil, which only {} have; {block} takes the columns {}",
+                    port.name(),
+                    coil_form(port),
+                    names_of(|b| b.coils().contains(&port)).replace(' ', ", "),
+                    columns(block, mode)
                 )));
             } else {
                 return Err(here(format!(
@@ -132,10 +153,25 @@ impl Layout {
     }
 }
 
+/// The coil of some block of the catalog named `name` (ASCII case ignored).
+fn coil_elsewhere(name: &str) -> Option<Port> {
+    Block::ALL
+        .iter()
+        .flat_map(|b| b.coils())
+        .copied()
+        .find(|p| p.name().eq_ignore_ascii_case(name))
+}
+
+/// How the manuals write a coil in LAD: `-(RT)-`.
+fn coil_form(port: Port) -> String {
+    format!("-({})-", port.name())
+}
+
 /// The columns `block`'s traces may have, as a message lists them.
 fn columns(block: Block, mode: Mode) -> String {
     let mut names = vec![TIME_COLUMN];
     names.extend(block.inputs().iter().map(|p| p.name()));
+    names.extend(block.coils().iter().map(|p| p.name()));
     if mode == Mode::WithOutputs {
         names.extend(block.outputs().iter().map(|p| p.name()));
     }
@@ -920,7 +956,7 @@ pub struct Columns {
     pub block: Block,
     /// Whether the trace has `t_ms` (otherwise the time of a row is its index).
     pub timed: bool,
-    /// The boolean inputs the trace has, in catalog order.
+    /// The boolean inputs the trace has, in catalog order, then the coils it has (`RT`).
     pub inputs: Vec<Port>,
     /// Whether the preset is a column of the trace (otherwise the command line gives it).
     pub preset_column: bool,
@@ -983,6 +1019,7 @@ fn observe_family<F: Adapter, R: Read>(
     let inputs = block
         .inputs()
         .iter()
+        .chain(block.coils())
         .copied()
         .filter(|&p| engine.layout.bools.iter().any(|&(_, q)| q == p))
         .collect();

@@ -178,6 +178,26 @@ explains! {
         |t, kind, _now, input| unexplained(t.call(kind, input));
 }
 
+/// The `-(RT)-` coil of an IEC timer, explained as [`Explains`] explains a call: the reference
+/// gives the rules that acted ([`IecTimerRef::reset_timer_explained`]), the optimized form none.
+pub trait ExplainsRt {
+    /// The coil with power flow; the rules that acted on the state.
+    fn reset_explained(&mut self) -> RuleSet;
+}
+
+impl ExplainsRt for IecTimerRef<u32> {
+    fn reset_explained(&mut self) -> RuleSet {
+        self.reset_timer_explained()
+    }
+}
+
+impl ExplainsRt for IecTimer {
+    fn reset_explained(&mut self) -> RuleSet {
+        self.reset_timer();
+        RuleSet::EMPTY
+    }
+}
+
 /// Which implementation of a block to drive.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Implementation {
@@ -489,8 +509,8 @@ pub trait Adapter {
     /// Whether [`Adapter::call_explained`] gives the reference's rules (the optimized forms
     /// give none).
     fn explains(&self) -> bool;
-    /// The boolean inputs the adapter reads (of the family: TON has no R, which TONR's adapter
-    /// reads).
+    /// The boolean inputs and coils the adapter reads (of the family: TON has no R, which
+    /// TONR's adapter reads).
     fn reads(&self) -> &'static [Port];
 }
 
@@ -634,7 +654,9 @@ impl<T: IecTimerOps<u32>> IecAdapter<T> {
     }
 }
 
-impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Adapter for IecAdapter<T> {
+impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>> + ExplainsRt> Adapter
+    for IecAdapter<T>
+{
     type Preset = Time;
     type State = IecState<u32>;
     type Output = IecOutput<u32>;
@@ -649,21 +671,43 @@ impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Adapter 
         i128::from(pt.clamp_negative())
     }
 
+    /// A row with `RT` = 1 runs the `-(RT)-` coil first (a network above the box's), then
+    /// the box (spec/cli.md, "Traces").
     #[inline]
     fn call(&mut self, now: u64, signals: Signals, pt: Time) -> IecOutput<u32> {
+        if signals.get(Port::Rt) {
+            self.timer.reset_timer();
+        }
         let input = self.input(signals, pt);
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
     }
 
+    /// [`Adapter::call`] explained: a row with `RT` = 1 gives IEC-RT-01 besides the call's
+    /// rules, for the state and for both outputs: the coil cleared Q and ET in this row, and
+    /// what the call then did to them started from what the coil left.
     fn call_explained(
         &mut self,
         now: u64,
         signals: Signals,
         pt: Time,
     ) -> Explained<IecOutput<u32>> {
+        let coil = if signals.get(Port::Rt) {
+            self.timer.reset_explained()
+        } else {
+            RuleSet::EMPTY
+        };
         let input = self.input(signals, pt);
-        self.timer
-            .explained(self.kind, CpuTime::from_millis(now), input)
+        let mut e = self
+            .timer
+            .explained(self.kind, CpuTime::from_millis(now), input);
+        if !coil.is_empty() {
+            let n = self.block.outputs().len();
+            for o in &mut e.outputs[..n] {
+                *o = o.union(coil);
+            }
+            e.state = e.state.union(coil);
+        }
+        e
     }
 
     fn explains(&self) -> bool {
@@ -684,7 +728,7 @@ impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>>> Adapter 
     }
 
     fn reads(&self) -> &'static [Port] {
-        &[Port::In, Port::R]
+        &[Port::In, Port::R, Port::Rt]
     }
 }
 
@@ -956,6 +1000,10 @@ mod tests {
                         reads.contains(port),
                         "{block}: the adapter reads {port:?} exactly when it is a boolean input"
                     );
+                }
+                for port in block.coils() {
+                    assert!(reads.contains(port), "{block}: the adapter reads {port:?}");
+                    assert_eq!(port.kind(), ValueKind::Bool);
                 }
                 assert!(reads.iter().all(|p| p.kind() == ValueKind::Bool));
                 assert_eq!(preset.kind(), block.preset().kind, "{block}");

@@ -19,8 +19,10 @@
 //! - `decisions.csv` (every timer, the IEC counters): one block of rows per decision of `spec/`
 //!   that departs from, or chooses between readings of, a manual's wording, or where a peer
 //!   runtime differs (`spec/s5.md` "Departures weighed", `spec/iec.md`, `spec/counter.md`).
+//!   The IEC timers' file has the optional `RT` column (the `-(RT)-` coil, IEC-RT-01); no
+//!   other file sets a coil, so theirs have the box's columns only.
 
-use plc_timers::catalog::Port::{self, Cd, Cu, Fr, In, Ld, R, S};
+use plc_timers::catalog::Port::{self, Cd, Cu, Fr, In, Ld, Rt, R, S};
 use plc_timers::catalog::{Block, Family, PresetKind, ValueKind};
 
 use super::engine::{run, TIME_COLUMN};
@@ -76,18 +78,28 @@ impl Trace {
         }
     }
 
-    /// Adds a row with the inputs `on` at 1 (those the block has; the others are not columns).
+    /// Adds a row with the inputs and coils `on` at 1 (those the block has; the others are not
+    /// columns).
     fn row(&mut self, t: u64, on: &[Port], preset: &str) {
         self.rows.push((t, Signals::of(on), preset.to_string()));
     }
 
+    /// The CSV text: `t_ms` (timers), the inputs, then a column for each coil (`RT`) that
+    /// some row sets: a trace that uses no coil has the box's columns only.
     fn text(&self) -> String {
         let timed = self.block.requires_time();
+        let coils: Vec<Port> = self
+            .block
+            .coils()
+            .iter()
+            .copied()
+            .filter(|&c| self.rows.iter().any(|(_, on, _)| on.get(c)))
+            .collect();
         let mut names: Vec<&str> = Vec::new();
         if timed {
             names.push(TIME_COLUMN);
         }
-        names.extend(self.block.inputs().iter().map(|p| p.name()));
+        names.extend(self.block.inputs().iter().chain(&coils).map(|p| p.name()));
         let mut text = names.join(",");
         text.push('\n');
         for (t, on, preset) in &self.rows {
@@ -95,7 +107,7 @@ impl Trace {
             if timed {
                 fields.push(t.to_string());
             }
-            for &port in self.block.inputs() {
+            for &port in self.block.inputs().iter().chain(&coils) {
                 fields.push(match port.kind() {
                     ValueKind::Bool => u8::from(on.get(port)).to_string(),
                     _ => preset.clone(),
@@ -527,6 +539,26 @@ fn decisions(block: Block) -> Option<Trace> {
             (29, &[], "T#20MS"),
             (30, &[], "T#20MS"),
             (31, &[], "T#20MS"),
+            // IEC-RT-01 (iec.md W3): RT during a pulse with IN = 0 ends it: Q = 0, ET = 0 at
+            // 110 and 115, where the pulse started at 100 would still run (Q = 1, ET 15).
+            (100, &[In], "T#20MS"),
+            (105, &[], "T#20MS"),
+            (110, &[Rt], "T#20MS"),
+            (115, &[], "T#20MS"),
+            // IEC-RT-01: RT during a pulse with IN held ends it and clears the stored IN, so
+            // IN = 1 at the box in that row is a rising edge: a new pulse of PT starts at 210
+            // (Q = 1, ET 0), runs at 225 (ET 15, where the old one had ended at 220) and ends
+            // at 230.
+            (200, &[In], "T#20MS"),
+            (210, &[In, Rt], "T#20MS"),
+            (225, &[In], "T#20MS"),
+            (230, &[In], "T#20MS"),
+            // IEC-RT-01: after the pulse, IN still held (ET = PT): RT clears ET, and the same
+            // rising edge starts a new pulse at 240.
+            (240, &[In, Rt], "T#20MS"),
+            (250, &[In], "T#20MS"),
+            (260, &[In], "T#20MS"),
+            (270, &[], "T#20MS"),
         ]),
         Block::Ton => rows(&[
             // IEC-EXPIRY-01: Q rises in the call where ET reaches PT, not one call later.
@@ -535,6 +567,23 @@ fn decisions(block: Block) -> Option<Trace> {
             (29, &[In], "T#20MS"),
             (30, &[In], "T#20MS"),
             (31, &[], "T#20MS"),
+            // IEC-RT-01 (iec.md W3): RT while timing with IN held: ET = 0, Q = 0, and the
+            // stored IN cleared, so IN = 1 in that row is a rising edge: timing starts again
+            // at 115, and again at 120 (RT held); it expires PT after the last start (Q = 1 at
+            // 140, not at 120 as started at 100).
+            (100, &[In], "T#20MS"),
+            (110, &[In], "T#20MS"),
+            (115, &[In, Rt], "T#20MS"),
+            (120, &[In, Rt], "T#20MS"),
+            (130, &[In], "T#20MS"),
+            (139, &[In], "T#20MS"),
+            (140, &[In], "T#20MS"),
+            // IEC-RT-01: RT on an expired TON with IN held: Q falls, timing restarts at 150,
+            // Q = 1 again at 170.
+            (150, &[In, Rt], "T#20MS"),
+            (160, &[In], "T#20MS"),
+            (170, &[In], "T#20MS"),
+            (180, &[], "T#20MS"),
         ]),
         Block::Tof => rows(&[
             // IEC-EXPIRY-01: Q falls in the call where ET reaches PT.
@@ -543,6 +592,25 @@ fn decisions(block: Block) -> Option<Trace> {
             (29, &[], "T#20MS"),
             (30, &[], "T#20MS"),
             (31, &[In], "T#20MS"),
+            // IEC-RT-01 (iec.md W3): RT during the off-delay (started at 110): Q = 0, ET = 0;
+            // no falling edge follows, so Q stays 0 (at 125 and 140, where the delay would
+            // still run) until IN rises (150) and falls (160) again.
+            (100, &[In], "T#20MS"),
+            (110, &[], "T#20MS"),
+            (115, &[], "T#20MS"),
+            (118, &[Rt], "T#20MS"),
+            (125, &[], "T#20MS"),
+            (140, &[], "T#20MS"),
+            (150, &[In], "T#20MS"),
+            (160, &[], "T#20MS"),
+            (175, &[], "T#20MS"),
+            (180, &[], "T#20MS"),
+            // IEC-RT-01: RT after the delay clears the ET held at PT.
+            (190, &[Rt], "T#20MS"),
+            // IEC-RT-01: RT with IN = 1: the box's IN = 1 sets Q again in that row.
+            (200, &[In, Rt], "T#20MS"),
+            (210, &[], "T#20MS"),
+            (230, &[], "T#20MS"),
         ]),
         Block::Tonr => rows(&[
             // IEC-EXPIRY-01: the accumulated time reaches PT: Q = 1 at ET = PT.
@@ -559,6 +627,23 @@ fn decisions(block: Block) -> Option<Trace> {
             (80, &[In], "T#20MS"),
             (90, &[In], "T#20MS"),
             (100, &[], "T#20MS"),
+            // IEC-RT-01 (iec.md W3): RT clears the accumulated time as R does (ET 10 -> 0 at
+            // 220); with IN held, the box finds the timer stopped with ET = 0 and Q = 0 in the
+            // RT row, so it times again from 0 (245: ET 0, not 15), and an expired TONR
+            // restarts (270: Q 1 -> 0, ET 0; Q = 1 again at 290).
+            (150, &[R], "T#20MS"),
+            (200, &[In], "T#20MS"),
+            (210, &[], "T#20MS"),
+            (220, &[Rt], "T#20MS"),
+            (230, &[In], "T#20MS"),
+            (240, &[In], "T#20MS"),
+            (245, &[In, Rt], "T#20MS"),
+            (255, &[In], "T#20MS"),
+            (265, &[In], "T#20MS"),
+            (270, &[In, Rt], "T#20MS"),
+            (280, &[In], "T#20MS"),
+            (290, &[In], "T#20MS"),
+            (300, &[], "T#20MS"),
         ]),
         Block::Ctu | Block::Ctd | Block::Ctud => {
             // CNT-PRIO-01: R and LD act as levels: edges at CU and CD while one is held do not
@@ -719,7 +804,9 @@ pub fn readme() -> String {
          limits.csv (counters) counts into the type's limits; simultaneous.csv raises every\n\
          combination of inputs together; fr.csv (S5 blocks) has FR edges; decisions.csv (timers,\n\
          IEC counters) pins the decisions of spec/ that weigh a manual's wording or where other\n\
-         runtimes differ (the comments of cli/src/trace/vectors.rs name each).\n\n\
+         runtimes differ (the comments of cli/src/trace/vectors.rs name each); in TP, TON, TOF\n\
+         and TONR it has an RT column, the -(RT)- coil, which a row with RT = 1 runs before the\n\
+         box call of that row (spec/cli.md, \"Traces\"); the other files have no RT column.\n\n\
          Replay a file through your implementation, write the same columns, and compare with\n\
          \x20 plc-timers check BLOCK FILE          (add --type T for IEC counters)\n\
          which reports the first differing line and column, the rule that decides it, and the\n\
