@@ -144,6 +144,25 @@ fn time_s7_1200_table_8_21_range_ends() {
     assert_eq!(Time::MAX.to_string(), "T#24D_20H_31M_23S_647MS");
 }
 
+/// Magnitudes far past TIME's range stay range errors, with either sign: past 2^40 ms (where
+/// the parser caps the magnitude before the sign is applied), at 2^63 ms and at 2^64 - 1 ms,
+/// the largest the digits' 64-bit accumulator holds (a cap that let such a value through as a
+/// signed number would turn it into a small negative time).
+#[test]
+fn time_huge_magnitudes_are_range_errors() {
+    for text in [
+        "T#1099511627777MS",        // 2^40 + 1
+        "T#9223372036854775808MS",  // 2^63
+        "T#18446744073709551615MS", // 2^64 - 1
+        "T#-18446744073709551615MS",
+        "T#99999999999D",
+        "18446744073709551615",
+        "-9223372036854775809",
+    ] {
+        assert_eq!(time_err(text), LiteralErrorKind::OutOfRange, "{text}");
+    }
+}
+
 /// S7-1200 manual: "T#200ms or 200" and "T#2s_200ms".
 #[test]
 fn time_s7_1200_literal_forms() {
