@@ -167,6 +167,23 @@ fn input_builders_set_one_input() {
         let back = i.with_r(!r).with_ld(!ld);
         assert_eq!((back.r, back.ld), (!r, !ld), "builders overwrite");
     }
+    let pv = CounterPreset::new(7).expect("0..=999");
+    let base = S5CounterInput::new(true, true, pv);
+    for bits in 0..8u8 {
+        let (s, r, fr) = (bits & 1 != 0, bits & 2 != 0, bits & 4 != 0);
+        let i = base.with_s(s).with_r(r).with_fr(fr);
+        assert_eq!(
+            (i.cu, i.cd, i.s, i.r, i.fr, i.pv),
+            (true, true, s, r, fr, pv),
+            "S5 {bits:03b}"
+        );
+        let back = i.with_s(!s).with_r(!r).with_fr(!fr);
+        assert_eq!(
+            (back.s, back.r, back.fr),
+            (!s, !r, !fr),
+            "S5 builders overwrite"
+        );
+    }
 }
 
 /// QD = CV <= 0 for unsigned types means CV = 0.

@@ -536,3 +536,15 @@ fn expiry_at_et_equal_pt() {
     tof.call(0, false, 100);
     assert_eq!(tof.call(100, false, 100), out(false, 100));
 }
+
+/// The input builder sets R and keeps IN and PT (the command-line tool and the bindings build
+/// every row's inputs through it).
+#[test]
+fn input_builder_sets_reset() {
+    let pt = Time::from_millis(250);
+    for (input, reset) in [(false, false), (true, false), (false, true), (true, true)] {
+        let i = IecInput::new(input, pt).with_reset(reset);
+        assert_eq!((i.input, i.pt, i.reset), (input, pt, reset));
+        assert_eq!(i.with_reset(!reset).reset, !reset, "the builder overwrites");
+    }
+}

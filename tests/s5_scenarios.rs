@@ -533,3 +533,18 @@ fn state_validity_lad_9_1_value_0_to_999() {
     assert_eq!(area.set_state(0, at(1000)), Ok(false));
     assert_eq!(area.get(0), Ok(S5State::RESET), "refused: unchanged");
 }
+
+/// The input builders set the one input they name and keep the others (the command-line tool
+/// and the bindings build every row's inputs through them).
+#[test]
+fn input_builders_set_one_input() {
+    let tv = S5Time::new(7, TimeBase::Ms100).expect("7 x 100 ms");
+    let base = S5Input::new(true, false, tv);
+    for bits in 0..4u8 {
+        let (r, fr) = (bits & 1 != 0, bits & 2 != 0);
+        let i = base.with_r(r).with_fr(fr);
+        assert_eq!((i.s, i.r, i.fr, i.tv), (true, r, fr, tv), "{bits:02b}");
+        let back = i.with_r(!r).with_fr(!fr);
+        assert_eq!((back.r, back.fr), (!r, !fr), "builders overwrite");
+    }
+}
