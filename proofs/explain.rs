@@ -736,6 +736,14 @@ pub fn prop_explain_counter<T: CounterInt>(
     );
     for &q in qs {
         complete(Rule::CNT_Q_01, true, e.outputs[q], &case);
+        // A Q output is CV compared with PV: whatever decided CV decided it too.
+        assert!(
+            e.outputs[cv_at].is_subset(e.outputs[q]),
+            "CNT-Q-01: output {q} is derived from CV, but lacks the rules that decided CV \
+             ({:?} not in {:?}) {case:?}",
+            e.outputs[cv_at],
+            e.outputs[q]
+        );
     }
     cover!(
         e.outputs[cv_at].contains(Rule::CNT_Q_01),
