@@ -163,6 +163,25 @@ fn time_huge_magnitudes_are_range_errors() {
     }
 }
 
+/// An unexpected character is named whole, whatever its UTF-8 length (1 to 4 bytes), in both
+/// parsers' paths (after a component, in place of a value, in plain milliseconds).
+#[test]
+fn unexpected_characters_are_named_whole() {
+    use LiteralErrorKind::UnexpectedChar;
+    for (text, c) in [
+        ("T#5S?", '?'),
+        ("T#5Sé", 'é'),
+        ("T#é", 'é'),
+        ("5é", 'é'),
+        ("T#5S€", '€'),
+        ("T#5S😀", '😀'),
+        ("12😀", '😀'),
+    ] {
+        assert_eq!(time_err(text), UnexpectedChar(c), "{text}");
+    }
+    assert_eq!(s5_err("S5T#5S€"), UnexpectedChar('€'));
+}
+
 /// S7-1200 manual: "T#200ms or 200" and "T#2s_200ms".
 #[test]
 fn time_s7_1200_literal_forms() {
