@@ -5,6 +5,7 @@
 //! manual's sentence.
 
 use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::rule::{Rule, RuleSet};
 use plc_timers::time::{CpuTime, Time};
 
 struct Both {
@@ -56,8 +57,18 @@ impl Both {
         a
     }
 
+    /// The coil on both; the reference's through its explained form, which must act as the
+    /// plain coil does and name IEC-RT-01 alone.
     fn rt(&mut self) {
-        self.reference.reset_timer();
+        let mut plain = self.reference;
+        plain.reset_timer();
+        let rules = self.reference.reset_timer_explained();
+        assert_eq!(
+            rules,
+            RuleSet::of(Rule::IEC_RT_01),
+            "IEC-RT-01: the coil's rules"
+        );
+        assert_eq!(self.reference, plain, "IEC-RT-01: explained coil = coil");
         self.structure.reset_timer();
     }
 }
