@@ -267,6 +267,9 @@ pub(crate) mod out {
     pub const O1: u8 = 2;
     /// Output 2 (BCD, CV of CTUD, CV_BCD).
     pub const O2: u8 = 4;
+
+    // Distinct bits: masks combine them with `|` (or `^`, or `+`: the same).
+    const _: () = assert!(O0 & O1 == 0 && O0 & O2 == 0 && O1 & O2 == 0);
 }
 
 /// What the rule functions of a reference report as they act. `()` records nothing and is what
