@@ -8,6 +8,11 @@ use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 use quickcheck::{quickcheck, TestResult};
 
 quickcheck! {
+    /// A CPU time made from milliseconds, either way, gives them back.
+    fn cpu_time_millis_round_trip(ms: u64) -> bool {
+        CpuTime::from(ms).as_millis() == ms && CpuTime::from_millis(ms) == CpuTime::from(ms)
+    }
+
     /// S5T-LIT-01: any valid word formats to a literal that parses to the same duration.
     fn s5time_literal_round_trip(word: u16) -> TestResult {
         let Ok(t) = S5Time::from_word(word) else { return TestResult::discard() };
