@@ -516,6 +516,35 @@ fn exhaustive_stl_operations() {
     });
 }
 
+/// SC-RANGE-01 for the optimized word, exhaustive over all 65 536 bit patterns: a word is
+/// accepted exactly when its layout holds (CV in bits 9-0 at most 999, bits 11-10 zero; the
+/// edge memories of CU, CD, S and FR in bits 12-15, any), and then it reads back its bits,
+/// its state is those fields, and the state packs into the same word.
+#[test]
+fn exhaustive_s5_counter_words() {
+    let mut accepted = 0;
+    for w in 0..=u16::MAX {
+        let cv = w & 0x3FF;
+        let valid = (w >> 10) & 0b11 == 0 && cv <= 999;
+        match S5Counter::from_bits(w) {
+            Some(word) => {
+                check!(valid, "SC-RANGE-01: bits {w:#06X} accepted");
+                check_eq!(word.bits(), w);
+                let st = word.state();
+                let edges = [st.cu_prev, st.cd_prev, st.s_prev, st.fr_prev];
+                check_eq!(
+                    (st.cv, edges),
+                    (cv, [12, 13, 14, 15].map(|b| w >> b & 1 == 1))
+                );
+                check_eq!(S5Counter::from_state(st), Some(word));
+                accepted += 1;
+            }
+            None => check!(!valid, "SC-RANGE-01: bits {w:#06X} rejected"),
+        }
+    }
+    check_eq!(accepted, 1000 * 16);
+}
+
 /// SC-BCD-01, exhaustive over all 65 536 words: a preset word is accepted exactly when it is
 /// three BCD digits (bits 15-12 zero, each digit 0-9), and then its value is the decimal reading.
 #[test]
