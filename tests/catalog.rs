@@ -120,6 +120,11 @@ fn every_block_is_its_box() {
     assert_eq!(Block::ALL.len(), BOXES.len(), "one block per box");
     for (block, b) in Block::ALL.iter().zip(&BOXES) {
         assert_eq!(block.name(), b.name, "{block:?}: the box name");
+        assert_eq!(
+            block.to_string(),
+            b.name,
+            "{block:?}: displayed as its box name"
+        );
         assert_eq!(block.aliases(), b.aliases, "{}: the STL mnemonics", b.name);
         assert_eq!(names(block.inputs()), b.inputs, "{}: inputs", b.name);
         assert_eq!(names(block.outputs()), b.outputs, "{}: outputs", b.name);
@@ -193,4 +198,25 @@ fn every_pin_carries_its_kind() {
     all.sort_unstable();
     all.dedup();
     assert_eq!(all.len(), Port::ALL.len(), "pin names are distinct");
+}
+
+/// An operand the area lacks is named as STL writes it (`T n`, `C n`, the international
+/// mnemonics) with the area's range.
+#[test]
+fn missing_operands_are_named_as_stl_writes_them() {
+    use plc_timers::counter::s5::CounterMemory;
+    use plc_timers::s5::TimerMemory;
+    use plc_timers::Operand;
+    assert_eq!(
+        (Operand::Timer.letter(), Operand::Counter.letter()),
+        ("T", "C")
+    );
+    let t = TimerMemory::<4>::new().status(7).expect_err("T 7 of 4");
+    assert_eq!(t.to_string(), "no timer T 7: this area has T 0 to T 3");
+    let c = CounterMemory::<2>::new().load(2).expect_err("C 2 of 2");
+    assert_eq!((c.operand, c.index, c.count), (Operand::Counter, 2, 2));
+    assert!(
+        c.to_string().contains("C 2") && c.to_string().contains("C 0 to C 1"),
+        "{c}"
+    );
 }
