@@ -531,6 +531,11 @@ fn exhaustive_s5_counter_words() {
                 check!(valid, "SC-RANGE-01: bits {w:#06X} accepted");
                 check_eq!(word.bits(), w);
                 let st = word.state();
+                check_eq!(
+                    S5CounterOps::state(&word),
+                    st,
+                    "SC-RANGE-01: the trait's view"
+                );
                 let edges = [st.cu_prev, st.cd_prev, st.s_prev, st.fr_prev];
                 check_eq!(
                     (st.cv, edges),
