@@ -8,6 +8,7 @@
 use bolero::generator::bolero_generator::driver::{ByteSliceDriver, Options};
 use bolero::generator::TypeGenerator;
 use plc_timers::counter::s5::{CounterPreset, S5CounterState};
+use plc_timers::iec::IecState;
 use plc_timers::s5::S5State;
 use plc_timers::time::{S5Time, TimeBase};
 use std::collections::BTreeSet;
@@ -98,4 +99,31 @@ fn s5_counter_generators_span_states_and_presets() {
     }
     let p: Vec<CounterPreset> = draws();
     spans("PV", &p, |p| p.value(), &[0, 999]);
+}
+
+#[test]
+fn iec_state_generator_spans_valid_states() {
+    let v: Vec<IecState<u32>> = draws();
+    assert!(
+        v.iter().all(IecState::is_valid),
+        "an invalid IEC state drawn"
+    );
+    spans(
+        "kind",
+        &v,
+        |s| s.kind.map(|k| k as u8),
+        &[None, Some(0), Some(1), Some(2), Some(3)],
+    );
+    for (name, f) in [
+        (
+            "input",
+            (|s: &IecState<u32>| s.input) as fn(&IecState<u32>) -> bool,
+        ),
+        ("running", |s| s.running),
+        ("q", |s| s.q),
+        ("ET below PT", |s| s.et < s.pt),
+        ("START set", |s| s.start != 0),
+    ] {
+        spans(name, &v, f, &[false, true]);
+    }
 }

@@ -4,7 +4,7 @@
 //! Each runs the reference and the 16-byte structure side by side; the assertions are the
 //! manual's sentence.
 
-use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps, IecTimerRef, TonBank};
 use plc_timers::rule::{Rule, RuleSet};
 use plc_timers::time::{CpuTime, Time};
 
@@ -558,4 +558,24 @@ fn input_builder_sets_reset() {
         assert_eq!((i.input, i.pt, i.reset), (input, pt, reset));
         assert_eq!(i.with_reset(!reset).reset, !reset, "the builder overwrites");
     }
+}
+
+/// Two TON banks are equal exactly when their timers' states are (and both have scanned or
+/// neither has).
+#[test]
+fn ton_banks_compare_by_their_timers() {
+    let pt = [Time::from_millis(100); 3];
+    let scanned = |input: [bool; 3]| {
+        let mut b = TonBank::<3>::new();
+        b.scan(CpuTime::from_millis(0), &input, &pt);
+        b
+    };
+    assert_eq!(TonBank::<3>::new(), TonBank::<3>::new());
+    assert_ne!(TonBank::<3>::new(), scanned([false; 3]), "one has scanned");
+    assert_eq!(scanned([false, true, false]), scanned([false, true, false]));
+    assert_ne!(
+        scanned([false, true, false]),
+        scanned([true, false, false]),
+        "timers differ"
+    );
 }
