@@ -616,14 +616,39 @@ pub fn prop_ton_bank<const N: usize>(
     for (dt, input) in steps.iter().zip(inputs) {
         now = now.add_millis(*dt);
         bank.scan(now, input, pts);
+        let mut outs = [None; N];
         for (i, r) in refs.iter_mut().enumerate() {
             let o = r.call(IecKind::Ton, now, IecInput::new(input[i], pts[i]));
+            outs[i] = Some(o);
             check_eq!(bank.output(i), Ok(o), "IEC-BANK-01: timer {i} at {now:?}");
             check_eq!(
                 bank.get(i),
                 Ok(r.state()),
                 "IEC-BANK-01: state of timer {i} at {now:?}"
             );
+        }
+        // The bank's bulk readers give what the reference gives, timer by timer: from two
+        // opposite fills, so that a reader that skips a timer cannot pass by luck.
+        let mut n = 0;
+        for (i, o) in bank.outputs().enumerate() {
+            check_eq!(
+                Some(o),
+                outs[i],
+                "IEC-BANK-01: outputs() of timer {i} at {now:?}"
+            );
+            n += 1;
+        }
+        check_eq!(n, N, "IEC-BANK-01: outputs() gives every timer at {now:?}");
+        for (fill_q, fill_et) in [(true, u32::MAX), (false, 0)] {
+            let (mut q, mut et) = ([fill_q; N], [fill_et; N]);
+            bank.outputs_into(&mut q, &mut et);
+            for (i, want) in outs.iter().enumerate() {
+                check_eq!(
+                    Some((q[i], et[i])),
+                    want.map(|w| (w.q, w.et)),
+                    "IEC-BANK-01: outputs_into() of timer {i} at {now:?}"
+                );
+            }
         }
     }
 }
@@ -1480,7 +1505,8 @@ fn kani_step_equivalence() {
 /// time (`u32` ms), the 3 time steps (`u32` ms each), the IN bits of each timer in each scan,
 /// the 2 presets (any TIME). `#[kani::unwind(17)]`: the scan takes the 2 timers through the group
 /// code on a padded copy of 16 (loops of 16 iterations and the exit, the rising edges at most
-/// 16); the check's loop over 2 timers and the 3 scans are shorter.
+/// 16); the check's loops over 2 timers (the readers' too: `outputs`, and `outputs_into` from
+/// 2 fills) and the 3 scans are shorter.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_bank() {
