@@ -13,8 +13,8 @@ use plc_timers::counter::s5::{
     S5CounterRef, S5CounterState, CV_MAX,
 };
 use plc_timers::counter::{
-    BankInputs, Counter, CounterBank, CounterInput, CounterInt, CounterKind, CounterOps,
-    CounterRef, CounterState,
+    ArrayOutputs, BankInputs, Counter, CounterBank, CounterInput, CounterInt, CounterKind,
+    CounterOps, CounterRef, CounterState,
 };
 use plc_timers::{NoSuchOperand, Operand};
 use proptest::prelude::*;
@@ -225,6 +225,19 @@ proptest! {
         prop_rules(d.0, d.1, d.2);
     }
 
+    /// CNT-EQUIV-01: `call_array` over 40 counters of each kind (two groups of 16 and a padded
+    /// last group of 8), 12 scans of random inputs, presets near 0 and anywhere: equal to 40
+    /// reference counters.
+    #[test]
+    fn proptest_call_array_equals_reference(
+        scans in prop::collection::vec(any::<[u64; 4]>(), 12),
+        pv in prop::collection::vec(prop_oneof![-3i16..4, arb_wide::<i16>()], 40),
+        kind in 0usize..3,
+    ) {
+        let pv: [i16; 40] = core::array::from_fn(|i| pv[i]);
+        prop_call_array::<i16, 40>(CounterKind::ALL[kind], &scans, &pv);
+    }
+
     /// CNT-EQUIV-01: a bank of 64 CTUD counters over 12 scans of random inputs equals 64
     /// reference counters.
     #[test]
@@ -277,6 +290,67 @@ pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
             );
             check_eq!(bank.get(i), Ok(c.state()), "CNT-EQUIV-01 bank counter {i}");
             check_eq!(bank.output(i, pv), Ok(o), "CNT-EQUIV-01 bank output {i}");
+        }
+    }
+}
+
+/// CNT-EQUIV-01 (the array form): `N` counters called as `kind` by `Counter::call_array` with
+/// the input bits `scans` (bit `i % 64` of each word is counter `i`'s CU, CD, R, LD) and the
+/// presets `pv` equal `N` reference counters, called one by one: each counter's state, and the
+/// outputs written for it.
+pub fn prop_call_array<T: CounterInt, const N: usize>(
+    kind: CounterKind,
+    scans: &[[u64; 4]],
+    pv: &[T; N],
+) {
+    let mut counters = [Counter::<T>::new(); N];
+    let mut refs = [CounterRef::<T>::new(); N];
+    for (k, &[cu, cd, r, ld]) in scans.iter().enumerate() {
+        // Thin out R and LD so that counting is exercised too.
+        let (r, ld) = (r & cu & cd, ld & !cu & cd);
+        let bits = |w: u64| -> [bool; N] { core::array::from_fn(|i| w >> (i % 64) & 1 != 0) };
+        let (bcu, bcd, br, bld) = (bits(cu), bits(cd), bits(r), bits(ld));
+        // Outputs from a fill that differs scan by scan: an output left unwritten shows.
+        let fill = k % 2 == 0;
+        let (mut qu, mut qd) = ([fill; N], [!fill; N]);
+        let mut cv = [if fill { T::MAX } else { T::MIN }; N];
+        Counter::call_array(
+            &mut counters,
+            kind,
+            &BankInputs {
+                cu: &bcu,
+                cd: &bcd,
+                r: &br,
+                ld: &bld,
+            },
+            pv,
+            &mut ArrayOutputs {
+                qu: &mut qu,
+                qd: &mut qd,
+                cv: &mut cv,
+            },
+        );
+        for (i, c) in refs.iter_mut().enumerate() {
+            let o = c.call(
+                kind,
+                CounterInput {
+                    cu: bcu[i],
+                    cd: bcd[i],
+                    r: br[i],
+                    ld: bld[i],
+                    pv: pv[i],
+                },
+            );
+            check_eq!(
+                (qu[i], qd[i], cv[i]),
+                (o.qu, o.qd, o.cv),
+                "CNT-EQUIV-01 call_array outputs of counter {i} ({kind:?})"
+            );
+            check_eq!(
+                counters[i].state(),
+                c.state(),
+                "CNT-EQUIV-01 call_array state of counter {i} ({kind:?})"
+            );
         }
     }
 }
@@ -643,7 +717,7 @@ fn iec_counter_impls<T: CounterInt>(
     CounterState<T>,
     plc_timers::counter::CounterOutput<T>,
 )> {
-    let mut v = Vec::with_capacity(4);
+    let mut v = Vec::with_capacity(5);
     let mut r = CounterRef::from_state(st);
     let o = r.call(kind, i);
     v.push(("reference", r.state(), o));
@@ -653,6 +727,31 @@ fn iec_counter_impls<T: CounterInt>(
     let mut a = Counter::from_state(st);
     let o = a.call_for_arrays(kind, i);
     v.push(("packed, call_for_arrays", a.state(), o));
+    // The array form on an array of one: its group code on a padded copy of 16.
+    let mut arr = [Counter::from_state(st)];
+    let (mut qu, mut qd, mut cv) = ([true], [true], [T::MAX]);
+    Counter::call_array(
+        &mut arr,
+        kind,
+        &BankInputs {
+            cu: &[i.cu],
+            cd: &[i.cd],
+            r: &[i.r],
+            ld: &[i.ld],
+        },
+        &[i.pv],
+        &mut ArrayOutputs {
+            qu: &mut qu,
+            qd: &mut qd,
+            cv: &mut cv,
+        },
+    );
+    let o = plc_timers::counter::CounterOutput {
+        qu: qu[0],
+        qd: qd[0],
+        cv: cv[0],
+    };
+    v.push(("packed, call_array", arr[0].state(), o));
     if kind == CounterKind::Ctud {
         let mut bank = CounterBank::<T, 1>::new();
         check_eq!(bank.set_state(0, st), Ok(()));
@@ -828,11 +927,12 @@ macro_rules! counter_harness {
     ($name:ident, $t:ty) => {
         /// CNT-EQUIV-01 and every IEC counter rule for this type: random under `cargo test`,
         /// every state and input under Kani. Symbolic: the kind, the state (CV of this type,
-        /// the edge memories, Q), CU, CD, R, LD and PV. No loop but the implementations:
-        /// `#[kani::unwind(4)]` covers the three of CTUD (and the exit) and the bank's one
-        /// counter.
+        /// the edge memories, Q), CU, CD, R, LD and PV. `#[kani::unwind(17)]`: the array form
+        /// (`call_array` on one counter) runs its group code on a padded copy of 16 (loops of
+        /// 16 iterations and the exit, the largest); the loop over the implementations (5 for
+        /// CTUD) and the bank's one counter are shorter.
         #[test]
-        #[cfg_attr(kani, kani::proof, kani::unwind(4))]
+        #[cfg_attr(kani, kani::proof, kani::unwind(17))]
         fn $name() {
             bolero::check!()
                 .with_type::<(CounterKind, CounterState<$t>, CounterInput<$t>)>()
@@ -1172,6 +1272,27 @@ fn kani_stl_operations() {
                 _ => StlOp::R(rlo),
             });
             prop_stl_operations(pv, &ops);
+        });
+}
+
+/// The bolero harness of the array form (CNT-EQUIV-01): 2 counters of each kind, 3 scans.
+/// Symbolic: the kind, the CU, CD, R and LD bit masks of each scan (`u64` each; bits 0 and 1
+/// are the two counters'), the 2 presets (any `i16`). `#[kani::unwind(17)]`: the 2 counters go
+/// through the group code on a padded copy of 16 (loops of 16 iterations and the exit); the 3
+/// scans and the check's loop over 2 counters are shorter.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+fn kani_call_array() {
+    bolero::check!()
+        .with_type::<(u8, [[u64; 4]; 3], [i16; 2])>()
+        .with_iterations(2_000)
+        .for_each(|(kind, scans, pv)| {
+            let kind = match kind % 3 {
+                0 => CounterKind::Ctu,
+                1 => CounterKind::Ctd,
+                _ => CounterKind::Ctud,
+            };
+            prop_call_array::<i16, 2>(kind, scans, pv)
         });
 }
 

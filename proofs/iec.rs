@@ -653,6 +653,66 @@ pub fn prop_ton_bank<const N: usize>(
     }
 }
 
+/// IEC-STRUCT-01 (the array form): `N` structures called by `IecTimerOf::ton_array` with the
+/// IN bits `inputs[k]` and presets `pts` at the times `start + steps[..=k]` equal one reference
+/// TON per timer, called once per scan: each structure's state, and the outputs written for it.
+pub fn prop_ton_array<const N: usize>(
+    start: u64,
+    steps: &[u64],
+    inputs: &[[bool; N]],
+    pts: &[Time; N],
+) {
+    let mut timers = [IecTimerOf::<u32>::new(); N];
+    let mut refs = [IecTimerRef::new(); N];
+    let mut now = CpuTime::from_millis(start);
+    for (k, (dt, input)) in steps.iter().zip(inputs).enumerate() {
+        now = now.add_millis(*dt);
+        // Outputs from a fill that differs scan by scan: an output left unwritten shows.
+        let (mut q, mut et) = ([k % 2 == 0; N], [k as u32; N]);
+        IecTimerOf::ton_array(&mut timers, now, input, pts, &mut q, &mut et);
+        for (i, r) in refs.iter_mut().enumerate() {
+            let o = r.call(IecKind::Ton, now, IecInput::new(input[i], pts[i]));
+            check_eq!(
+                (q[i], et[i]),
+                (o.q, o.et),
+                "IEC-STRUCT-01: ton_array outputs of timer {i} at {now:?}"
+            );
+            check_eq!(
+                timers[i].state(),
+                r.state(),
+                "IEC-STRUCT-01: ton_array state of timer {i} at {now:?}"
+            );
+        }
+    }
+}
+
+#[cfg(not(kani))]
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    /// IEC-STRUCT-01 for `ton_array` over 40 timers (two groups of 16 and a padded last group
+    /// of 8): random IN patterns, presets including negative and 0, scan intervals crossing
+    /// the 2^32 ms wrap.
+    #[test]
+    fn proptest_ton_array_equals_reference(
+        start in prop_oneof![any::<u32>().prop_map(u64::from), ((u32::MAX - 500)..=u32::MAX).prop_map(u64::from)],
+        steps in prop::collection::vec(prop_oneof![0u64..5, 0u64..200, any::<u32>().prop_map(u64::from)], 12),
+        flips in prop::collection::vec(any::<u64>(), 12),
+        pts in prop::collection::vec(prop_oneof![-5i32..5, 0i32..300, any::<i32>()], 40),
+    ) {
+        let pts: [Time; 40] = core::array::from_fn(|i| Time::from_millis(pts[i]));
+        let mut input = 0u64;
+        let inputs: Vec<[bool; 40]> = flips
+            .iter()
+            .map(|f| {
+                input ^= f & f.rotate_left(17);
+                core::array::from_fn(|i| input >> i & 1 != 0)
+            })
+            .collect();
+        prop_ton_array(start, &steps, &inputs, &pts);
+    }
+}
+
 #[cfg(not(kani))]
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2_000))]
@@ -703,6 +763,9 @@ pub enum IecImpl {
     Bank,
     /// `IecTimerOf::ton_for_arrays` (TON calls only), the array form of the structure's call.
     TonForArrays,
+    /// `IecTimerOf::ton_array` on an array of one (TON calls only): the group code of the
+    /// array loop, on a padded copy of 16.
+    TonArray,
 }
 
 /// `op` from `state` through `imp`: the state after and the outputs (Q, ET), or `None` when the
@@ -731,6 +794,15 @@ pub fn iec_run<C: ClockWord>(
             let mut t = IecTimerOf::from_state(state).expect("valid");
             let out = t.ton_for_arrays(now, input);
             Some((t.state(), (out.q, out.et)))
+        }
+        IecImpl::TonArray => {
+            let Op::Call(IecKind::Ton, now, input) = op else {
+                return None;
+            };
+            let mut t = [IecTimerOf::from_state(state).expect("valid")];
+            let (mut q, mut et) = ([!state.q], [C::ZERO]);
+            IecTimerOf::ton_array(&mut t, now, &[input.input], &[input.pt], &mut q, &mut et);
+            Some((t[0].state(), (q[0], et[0])))
         }
     }
 }
@@ -1182,8 +1254,8 @@ fn call_rules<C: ClockWord>(
 }
 
 /// Every IEC rule through every implementation (the harness body), and each implementation's
-/// step equal to the reference's (IEC-STRUCT-01 for the structure and its array form
-/// `ton_for_arrays`, IEC-BANK-01 for the bank's TON, against `IecTimerRef`).
+/// step equal to the reference's (IEC-STRUCT-01 for the structure and its array forms
+/// `ton_for_arrays` and `ton_array`, IEC-BANK-01 for the bank's TON, against `IecTimerRef`).
 pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
     let mut checked = false;
     let reference = st
@@ -1195,6 +1267,7 @@ pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
         IecImpl::Structure,
         IecImpl::Bank,
         IecImpl::TonForArrays,
+        IecImpl::TonArray,
     ] {
         checked |= check_iec_rules(imp, st, op);
         if let (Some(r), Some(x)) = (
@@ -1362,13 +1435,13 @@ fn exhaustive_u8_wrap_rules() {
 macro_rules! iec_rules_harness {
     ($name:ident, $kind:expr) => {
         /// Every IEC rule for one kind on the 32-bit clock (`prop_iec_rules`: the reference, the
-        /// structure, its array form and, for TON, a one-timer bank; the metamorphic reruns)
+        /// structure, its array forms and, for TON, a one-timer bank; the metamorphic reruns)
         /// and the structure's layout. Symbolic: the state (any valid one, of this kind or none,
         /// PT and ET within the TIME range), the operation (a call of this kind at any time with
         /// any IN and PT, a read of Q or ET at any time, RT, a PT coil with any TIME,
         /// RUN-STOP-RUN). `#[kani::unwind(17)]`: the TON bank's scan runs its group code on a
-        /// padded copy of 16 timers (loops of 16 iterations and the exit, the largest); the loop
-        /// over the 4 implementations is shorter. The kind is a constant, so each harness holds
+        /// padded copy of 16 timers, and so does `ton_array` (loops of 16 iterations and the exit, the
+        /// largest); the loop over the 5 implementations is shorter. The kind is a constant, so each harness holds
         /// one kind's branches only.
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(17))]
@@ -1497,6 +1570,25 @@ fn kani_step_equivalence() {
                 if let Op::Call(kind, now, input) = op {
                     prop_table_8_20(st, kind, now, input, Time::from_millis(7));
                 }
+            });
+    });
+}
+
+/// IEC-STRUCT-01 (the array form): `ton_array` on 2 structures over 3 scans against 2
+/// reference TONs. Symbolic: the start time (`u32` ms), the 3 time steps (`u32` ms each), the
+/// IN bits of each timer in each scan, the 2 presets (any TIME). `#[kani::unwind(17)]`: the 2
+/// timers go through the group code on a padded copy of 16 (loops of 16 iterations and the
+/// exit); the check's loop over 2 timers and the 3 scans are shorter.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+fn kani_ton_array() {
+    crate::cover::check_ids(&["IEC-STRUCT-01"], || {
+        bolero::check!()
+            .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
+            .with_iterations(20_000)
+            .for_each(|(start, steps, inputs, pts)| {
+                let steps = steps.map(u64::from);
+                prop_ton_array::<2>(u64::from(*start), &steps, inputs, pts);
             });
     });
 }

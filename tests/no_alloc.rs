@@ -10,7 +10,8 @@ use plc_timers::counter::s5::{
     S5CounterRef,
 };
 use plc_timers::counter::{
-    BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps, CounterRef,
+    ArrayOutputs, BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps,
+    CounterRef,
 };
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef, TonBank};
 use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef, TimerMemory};
@@ -45,12 +46,20 @@ struct Blocks {
     iec_refs: [IecTimerRef; 4],
     iec: [IecTimer; 4],
     ton_bank: TonBank<3>,
+    /// 20: one group of the array form and a padded last one.
+    ton_array: [IecTimer; 20],
     ctr_refs: [CounterRef<i64>; 3],
     ctrs: [Counter<u64>; 3],
     ctr_bank: CounterBank<i32, 3>,
+    ctr_array: [Counter<i16>; 20],
     s5c_refs: [S5CounterRef; 3],
     s5c: [S5Counter; 3],
     s5c_area: CounterMemory<4>,
+}
+
+/// CD of the array of counters at step `i`.
+fn ins_down(i: u64) -> [bool; 20] {
+    core::array::from_fn(|k| (i + k as u64) % 6 < 2)
 }
 
 /// One step of everything at step `i`; the results are summed so that none is optimized away.
@@ -105,6 +114,10 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
     if let Ok(state) = b.ton_bank.get(1) {
         assert_eq!(b.ton_bank.set_state(2, state), Ok(true));
     }
+    let ins: [bool; 20] = core::array::from_fn(|k| (i + k as u64) % 5 < 3);
+    let (mut q, mut et) = ([false; 20], [0u32; 20]);
+    IecTimer::ton_array(&mut b.ton_array, now, &ins, &[pt; 20], &mut q, &mut et);
+    sum += et.iter().map(|&e| u64::from(e)).sum::<u64>() + q.iter().filter(|&&q| q).count() as u64;
 
     let ci = CounterInput {
         cu: s,
@@ -142,6 +155,29 @@ fn step_all(b: &mut Blocks, i: u64, tv: S5Time, pt: Time, pv: CounterPreset) -> 
         .sum::<u64>();
     if let Ok(state) = b.ctr_bank.get(0) {
         assert_eq!(b.ctr_bank.set_state(1, state), Ok(()));
+    }
+    let up: [bool; 20] = core::array::from_fn(|k| (i + k as u64) % 4 < 2);
+    let off = [false; 20];
+    let (mut qu, mut qd, mut cv) = ([false; 20], [false; 20], [0i16; 20]);
+    for kind in CounterKind::ALL {
+        Counter::call_array(
+            &mut b.ctr_array,
+            kind,
+            &BankInputs {
+                cu: &up,
+                cd: &ins_down(i),
+                r: &off,
+                ld: &off,
+            },
+            &[9; 20],
+            &mut ArrayOutputs {
+                qu: &mut qu,
+                qd: &mut qd,
+                cv: &mut cv,
+            },
+        );
+        sum += cv.iter().map(|c| c.unsigned_abs() as u64).sum::<u64>();
+        sum += (qu.iter().chain(&qd)).filter(|&&q| q).count() as u64;
     }
 
     let sci = S5CounterInput {
@@ -183,9 +219,11 @@ fn no_step_allocates() {
         iec_refs: [IecTimerRef::new(); 4],
         iec: [IecTimer::new(); 4],
         ton_bank: TonBank::new(),
+        ton_array: [IecTimer::new(); 20],
         ctr_refs: [CounterRef::new(); 3],
         ctrs: [Counter::new(); 3],
         ctr_bank: CounterBank::new(),
+        ctr_array: [Counter::new(); 20],
         s5c_refs: [S5CounterRef::new(); 3],
         s5c: [S5Counter::new(); 3],
         s5c_area: CounterMemory::new(),

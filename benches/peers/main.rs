@@ -106,8 +106,8 @@ use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
 };
 use plc_timers::counter::{
-    BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps, CounterOutput,
-    CounterRef,
+    ArrayOutputs, BankInputs, Counter, CounterBank, CounterInput, CounterKind, CounterOps,
+    CounterOutput, CounterRef,
 };
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef, TonBank};
 use plc_timers::s5::{
@@ -667,6 +667,28 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
             );
             black_box(&mut bank);
         }),
+        {
+            let mut timers = Box::new([IecTimer::new(); BANK]);
+            let (mut q, mut et) = (Box::new([false; BANK]), Box::new([0u32; BANK]));
+            let mut k = 0u64;
+            Workload::plain(
+                "optimized (IecTimer array, ton_array)",
+                1,
+                1e-3,
+                move || {
+                    k += 1;
+                    IecTimer::ton_array(
+                        &mut timers,
+                        CpuTime::from_millis(scan_time(k)),
+                        &scans[k as usize % SCANS],
+                        pt,
+                        &mut q,
+                        &mut et,
+                    );
+                    black_box((&mut timers, &mut q, &mut et));
+                },
+            )
+        },
         copy_floor("copy of the TonBank state", size_of::<TonBank<BANK>>()),
         copy_floor("copy of the IecTimer array", BANK * size_of::<IecTimer>()),
         // The per-instance floor: the loop above with a call that only takes its inputs into
@@ -769,6 +791,39 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
             }
         ),
     ];
+    {
+        let mut counters = Box::new([Counter::<i16>::new(); BANK]);
+        let pvs = Box::new([pv; BANK]);
+        let (mut qu, mut qd) = (Box::new([false; BANK]), Box::new([false; BANK]));
+        let mut cv = Box::new([0i16; BANK]);
+        let mut k = 0usize;
+        ws.push(Workload::plain(
+            "optimized (Counter array, call_array)",
+            1,
+            1e-3,
+            move || {
+                k += 1;
+                let s = &scans[k % scans.len()];
+                Counter::call_array(
+                    &mut counters,
+                    Kind::<UP_ONLY>::KIND,
+                    &BankInputs {
+                        cu: &s[0],
+                        cd: &s[1],
+                        r: &s[2],
+                        ld: &s[3],
+                    },
+                    &pvs,
+                    &mut ArrayOutputs {
+                        qu: &mut qu,
+                        qd: &mut qd,
+                        cv: &mut cv,
+                    },
+                );
+                black_box((&mut counters, &mut qu, &mut qd, &mut cv));
+            },
+        ));
+    }
     // The per-instance floor: the loop above with a call that only takes the inputs it reads
     // into the byte after CV of a 4-byte cell (`Counter<i16>`'s size) and passes the cell on, no
     // rule. No form that calls one instance at a time in its own data does less.
@@ -1024,6 +1079,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "optimized (TonBank)",
                 "optimized (IecTimer array, call)",
                 "optimized (IecTimer array, ton_for_arrays)",
+                "optimized (IecTimer array, ton_array)",
                 "RuSTy (array)",
                 "matiec (array)",
                 "copy of the IecTimer array",
@@ -1038,6 +1094,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "optimized (CounterBank)",
                 "optimized (Counter array, call)",
                 "optimized (Counter array, call_for_arrays)",
+                "optimized (Counter array, call_array)",
                 "per-instance floor",
             ],
         ),
@@ -1049,6 +1106,7 @@ fn summary(family: Family, tally: &mut Tally) {
                 "optimized (CounterBank)",
                 "optimized (Counter array, call)",
                 "optimized (Counter array, call_for_arrays)",
+                "optimized (Counter array, call_array)",
                 "RuSTy (array)",
                 "matiec (array)",
                 "per-instance floor",
@@ -1099,36 +1157,56 @@ fn summary(family: Family, tally: &mut Tally) {
             verdict(ok)
         );
     };
+    // The array goals, met by the array forms (`ton_array`, `call_array`: one call for the
+    // whole array, each instance in its own structure). A form called one instance at a time
+    // cannot meet them (see benches/README.md): its bound and its figure follow, as notes.
     goal(
-        "IecTimerRef array / IecTimer array (ton_for_arrays), 10 048 TON (>= 2x)",
+        "IecTimerRef array / IecTimer array (ton_array), 10 048 TON (>= 2x)",
         ratio(
             &format!("{TON_BANK}/reference (IecTimerRef array)"),
-            &format!("{TON_BANK}/optimized (IecTimer array, ton_for_arrays)"),
+            &format!("{TON_BANK}/optimized (IecTimer array, ton_array)"),
         ),
         |v| v >= 2.0,
     );
     for bank in [CTUD_BANK, CTU_BANK] {
         goal(
-            &format!("CounterRef array / Counter array (call_for_arrays), {bank} (>= 2x)"),
+            &format!("CounterRef array / Counter array (call_array), {bank} (>= 2x)"),
             ratio(
                 &format!("{bank}/reference (CounterRef array)"),
-                &format!("{bank}/optimized (Counter array, call_for_arrays)"),
+                &format!("{bank}/optimized (Counter array, call_array)"),
             ),
             |v| v >= 2.0,
         );
     }
     // What a per-instance form can reach at most: the reference against the loop that only
-    // moves each instance's inputs, state and outputs (not a goal; it says how far off one is).
-    for (group, reference) in [
-        (TON_BANK, "reference (IecTimerRef array)"),
-        (CTUD_BANK, "reference (CounterRef array)"),
-        (CTU_BANK, "reference (CounterRef array)"),
+    // moves each instance's inputs, state and outputs (not a goal; it says how far off one is),
+    // and what the per-instance array forms reach.
+    for (group, reference, per_instance) in [
+        (
+            TON_BANK,
+            "reference (IecTimerRef array)",
+            "optimized (IecTimer array, ton_for_arrays)",
+        ),
+        (
+            CTUD_BANK,
+            "reference (CounterRef array)",
+            "optimized (Counter array, call_for_arrays)",
+        ),
+        (
+            CTU_BANK,
+            "reference (CounterRef array)",
+            "optimized (Counter array, call_for_arrays)",
+        ),
     ] {
-        if let Some(v) = ratio(
-            &format!("{group}/{reference}"),
-            &format!("{group}/per-instance floor"),
+        let reference_over =
+            |form: &str| ratio(&format!("{group}/{reference}"), &format!("{group}/{form}"));
+        if let (Some(bound), Some(v)) = (
+            reference_over("per-instance floor"),
+            reference_over(per_instance),
         ) {
-            println!("  (bound, not a goal: {reference} / per-instance floor, {group}: {v:.2}x)");
+            println!(
+                "  (not a goal, {group}: one instance per call: {reference} / {per_instance} {v:.2}x; bound {reference} / per-instance floor {bound:.2}x)"
+            );
         }
     }
     goal(

@@ -29,7 +29,7 @@ pub mod reference;
 pub mod s5;
 
 pub use bank::{BankInputs, CounterBank};
-pub use packed::Counter;
+pub use packed::{ArrayOutputs, Counter};
 pub use reference::CounterRef;
 
 use core::fmt::Debug;

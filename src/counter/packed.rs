@@ -2,7 +2,8 @@
 //! a short step.
 
 use super::{
-    outputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterState,
+    outputs, BankInputs, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput,
+    CounterState,
 };
 
 const CU_PREV: u8 = 1;
@@ -100,6 +101,205 @@ impl<T: CounterInt> Counter<T> {
         self.cv = cv;
         self.edges = edges;
         outputs(cv, input.pv)
+    }
+}
+
+impl<T: CounterInt> Counter<T> {
+    /// Every counter of an array called once as `kind`, counter `i` with the inputs at index `i`
+    /// (`inputs.cu[i]`, ..., `pv[i]`) and its outputs written to `out[i]`: the loop
+    /// `for i in 0..N { out[i] = counters[i].call_for_arrays(kind, input_i) }` (what a PLC
+    /// program's `FOR` loop over an `ARRAY OF CTU` does), in one pass that the compiler
+    /// vectorizes over the counters in their own layout, for the widest vector extension this
+    /// CPU has with the feature `simd-dispatch`. Same counters and outputs afterwards as that
+    /// loop, and as the reference called once per counter (`proofs/counter.rs`).
+    ///
+    /// Called one counter at a time, a counter cannot cost less than moving its inputs in and
+    /// its outputs out (the per-instance floor of `benches/peers`); a loop the library owns can
+    /// process several counters per instruction.
+    ///
+    /// ```
+    /// use plc_timers::counter::{ArrayOutputs, BankInputs, Counter, CounterKind};
+    /// let mut counters = [Counter::<i16>::new(); 3];
+    /// let (on, off) = ([true, false, true], [false; 3]);
+    /// let inputs = BankInputs { cu: &on, cd: &off, r: &off, ld: &off };
+    /// let (mut q, mut qd, mut cv) = ([false; 3], [false; 3], [0; 3]);
+    /// let mut out = ArrayOutputs { qu: &mut q, qd: &mut qd, cv: &mut cv };
+    /// Counter::call_array(&mut counters, CounterKind::Ctu, &inputs, &[1, 1, 2], &mut out);
+    /// assert_eq!((q, cv), ([true, false, false], [1, 0, 1]));
+    /// ```
+    pub fn call_array<const N: usize>(
+        counters: &mut [Counter<T>; N],
+        kind: CounterKind,
+        inputs: &BankInputs<'_, N>,
+        pv: &[T; N],
+        out: &mut ArrayOutputs<'_, T, N>,
+    ) {
+        crate::simd::run(CallArray {
+            counters,
+            kind,
+            inputs,
+            pv,
+            out,
+        });
+    }
+}
+
+/// Where [`Counter::call_array`] writes the outputs: counter `i`'s at index `i` of each array.
+#[derive(Debug, PartialEq, Eq)]
+pub struct ArrayOutputs<'a, T, const N: usize> {
+    /// `QU` (CTU's `Q`) of every counter.
+    pub qu: &'a mut [bool; N],
+    /// `QD` (CTD's `Q`) of every counter.
+    pub qd: &'a mut [bool; N],
+    /// `CV` of every counter.
+    pub cv: &'a mut [T; N],
+}
+
+/// [`Counter::call_array`] as a loop for [`crate::simd::run`].
+struct CallArray<'a, 'b, 'c, T, const N: usize> {
+    counters: &'a mut [Counter<T>; N],
+    kind: CounterKind,
+    inputs: &'a BankInputs<'b, N>,
+    pv: &'a [T; N],
+    out: &'a mut ArrayOutputs<'c, T, N>,
+}
+
+impl<T: CounterInt, const N: usize> crate::simd::Kernel for CallArray<'_, '_, '_, T, N> {
+    #[inline(always)]
+    fn run(self) {
+        let CallArray {
+            counters,
+            kind,
+            inputs,
+            pv,
+            out,
+        } = self;
+        // The inputs `kind` has (the kernel is compiled apart from its caller, where `kind`
+        // is not a constant: masks, not a match per counter).
+        let all = CounterInput {
+            cu: true,
+            cd: true,
+            r: true,
+            ld: true,
+            pv: T::ZERO,
+        };
+        let has = masked_inputs(kind, &all);
+        call_array_lanes(
+            counters,
+            has,
+            inputs,
+            pv,
+            ArrayOutputs {
+                qu: out.qu,
+                qd: out.qd,
+                cv: out.cv,
+            },
+        );
+    }
+}
+
+/// Counters per group of [`Counter::call_array`].
+const LANES: usize = 16;
+
+/// The loop of [`Counter::call_array`]: the counters in groups of [`LANES`], the last
+/// `N % LANES` through the same code on a padded copy (the padding counters are new ones with
+/// every input 0, whose results are dropped), so that every counter takes the one path.
+#[inline(always)]
+fn call_array_lanes<T: CounterInt, const N: usize>(
+    counters: &mut [Counter<T>; N],
+    has: (bool, bool, bool, bool),
+    inputs: &BankInputs<'_, N>,
+    pv: &[T; N],
+    out: ArrayOutputs<'_, T, N>,
+) {
+    let (counters, counters_tail) = counters.as_chunks_mut::<LANES>();
+    let (cu, cu_tail) = inputs.cu.as_chunks::<LANES>();
+    let (cd, cd_tail) = inputs.cd.as_chunks::<LANES>();
+    let (r, r_tail) = inputs.r.as_chunks::<LANES>();
+    let (ld, ld_tail) = inputs.ld.as_chunks::<LANES>();
+    let (pv, pv_tail) = pv.as_chunks::<LANES>();
+    let (qu, qu_tail) = out.qu.as_chunks_mut::<LANES>();
+    let (qd, qd_tail) = out.qd.as_chunks_mut::<LANES>();
+    let (cv, cv_tail) = out.cv.as_chunks_mut::<LANES>();
+    for (g, counters) in counters.iter_mut().enumerate() {
+        counter_group(
+            counters,
+            has,
+            [&cu[g], &cd[g], &r[g], &ld[g]],
+            &pv[g],
+            &mut qu[g],
+            &mut qd[g],
+            &mut cv[g],
+        );
+    }
+    let n = counters_tail.len();
+    if n > 0 {
+        let mut counters = [Counter::new(); LANES];
+        let mut inputs = [[false; LANES]; 4];
+        let mut pv = [T::ZERO; LANES];
+        let (mut qu, mut qd, mut cv) = ([false; LANES], [false; LANES], [T::ZERO; LANES]);
+        counters[..n].copy_from_slice(counters_tail);
+        for (padded, tail) in inputs.iter_mut().zip([cu_tail, cd_tail, r_tail, ld_tail]) {
+            padded[..n].copy_from_slice(tail);
+        }
+        pv[..n].copy_from_slice(pv_tail);
+        let [cu, cd, r, ld] = &inputs;
+        counter_group(
+            &mut counters,
+            has,
+            [cu, cd, r, ld],
+            &pv,
+            &mut qu,
+            &mut qd,
+            &mut cv,
+        );
+        counters_tail.copy_from_slice(&counters[..n]);
+        qu_tail.copy_from_slice(&qu[..n]);
+        qd_tail.copy_from_slice(&qd[..n]);
+        cv_tail.copy_from_slice(&cv[..n]);
+    }
+}
+
+/// [`LANES`] counters of [`Counter::call_array`], every array a parameter of its own:
+/// parameters that are `&mut` are known not to overlap anything else (LLVM's `noalias`, kept
+/// when inlined), which lets the compiler keep the arrays' addresses in registers and
+/// vectorize the stores (read through the kernel's structure, they were reloaded after every
+/// store). CV and the edge bytes are moved into arrays of their own (structure of arrays,
+/// which the lane loop vectorizes as the bank's does; the loop straight over the structures
+/// was not vectorized, and 3x slower), the lane run on each, and the results moved back.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn counter_group<T: CounterInt>(
+    counters: &mut [Counter<T>; LANES],
+    has: (bool, bool, bool, bool),
+    [cu, cd, r, ld]: [&[bool; LANES]; 4],
+    pv: &[T; LANES],
+    qu: &mut [bool; LANES],
+    qd: &mut [bool; LANES],
+    cv_out: &mut [T; LANES],
+) {
+    let mut cv: [T; LANES] = core::array::from_fn(|j| counters[j].cv);
+    let mut edges: [u8; LANES] = core::array::from_fn(|j| counters[j].edges);
+    for j in 0..LANES {
+        (cv[j], edges[j]) = ctud_lane(
+            cv[j],
+            edges[j],
+            cu[j] & has.0,
+            cd[j] & has.1,
+            r[j] & has.2,
+            ld[j] & has.3,
+            pv[j],
+        );
+    }
+    for j in 0..LANES {
+        counters[j] = Counter {
+            cv: cv[j],
+            edges: edges[j],
+        };
+        let o = outputs(cv[j], pv[j]);
+        qu[j] = o.qu;
+        qd[j] = o.qd;
+        cv_out[j] = o.cv;
     }
 }
 

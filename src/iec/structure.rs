@@ -339,36 +339,217 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// (expired, Q = 1), which is `2 + 2 * not_reached`.
     #[inline]
     pub fn ton_for_arrays(&mut self, now: CpuTime, input: IecInput) -> IecOutput<C> {
-        use core::hint::select_unpredictable as select;
         let now = now.clock::<C>();
-        let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u8) << flag::KIND_SHIFT;
-        // The flags as 32-bit values: byte-wide bit arithmetic would write parts of registers,
-        // which on some CPUs (AMD Zen) makes each timer wait for the previous timer's result.
-        let f = u32::from(self.flags);
-        let on = u32::from(input.input);
-        // A rise is taken as a running timer with START = now and the new PT, whose update
-        // then finds elapsed = 0 (see above): selected, not branched to.
-        let rise = on & !f & u32::from(flag::IN) != 0;
-        let start = select(rise, now, self.start);
-        let pt = select(rise, C::from_preset(input.pt.clamp_negative()), self.pt);
-        let run = rise | (f & u32::from(flag::RUNNING) != 0);
-        let elapsed = now.elapsed_since(start);
-        let not_reached = !reached(elapsed, pt);
-        let et = select(run, select(not_reached, elapsed, pt), self.et);
-        // Q (bit 1) and RUNNING (bit 2) after the update: a running timer is either still
-        // running (4) or has expired with Q = 1 (2); a stopped one keeps its Q.
-        let status = select(run, 2 + 2 * u32::from(not_reached), f & u32::from(flag::Q));
-        // IN = 0 clears everything but PT.
-        let on_mask = on.wrapping_neg();
-        let status = (u32::from(flag::IN) | status) & on_mask;
-        self.start = masked(start, (status >> 2).wrapping_neg());
-        self.pt = pt;
-        self.et = masked(et, on_mask);
-        self.flags = kind_bits | status as u8;
+        let lane = ton_lane(
+            Lane {
+                start: self.start,
+                pt: self.pt,
+                et: self.et,
+                flags: self.flags,
+            },
+            now,
+            input.input,
+            input.pt,
+        );
+        (self.start, self.pt, self.et, self.flags) = (lane.start, lane.pt, lane.et, lane.flags);
         IecOutput {
-            q: status & u32::from(flag::Q) != 0,
-            et: self.et,
+            q: lane.flags & flag::Q != 0,
+            et: lane.et,
         }
+    }
+
+    /// Every TON of an array called once at `now`, timer `i` with `IN` = `input[i]` and `PT` =
+    /// `pt[i]`, its outputs written to `q[i]` and `et[i]`: the loop
+    /// `for i in 0..N { timers[i].ton_for_arrays(now, IecInput::new(input[i], pt[i])) }` (what
+    /// a PLC program's `FOR` loop over an `ARRAY OF IEC_TIMER` called as TON does), in one
+    /// pass that the compiler vectorizes over the structures in their own layout, for the
+    /// widest vector extension this CPU has with the feature `simd-dispatch`. Same structures
+    /// and outputs afterwards as that loop, and as the reference called once per timer
+    /// (`proofs/iec.rs`).
+    ///
+    /// Called one structure at a time, a timer cannot cost less than moving its inputs in and
+    /// its outputs out (the per-instance floor of `benches/peers`); a loop the library owns
+    /// can process several timers per instruction.
+    ///
+    /// ```
+    /// use plc_timers::iec::IecTimer;
+    /// use plc_timers::time::{CpuTime, Time};
+    /// let mut timers = [IecTimer::new(); 2];
+    /// let pt = [Time::from_millis(100); 2];
+    /// let (mut q, mut et) = ([false; 2], [0; 2]);
+    /// for ms in [0, 60, 120] {
+    ///     IecTimer::ton_array(&mut timers, CpuTime::from_millis(ms), &[true, false], &pt, &mut q, &mut et);
+    /// }
+    /// assert_eq!((q, et), ([true, false], [100, 0]));
+    /// ```
+    pub fn ton_array<const N: usize>(
+        timers: &mut [IecTimerOf<C>; N],
+        now: CpuTime,
+        input: &[bool; N],
+        pt: &[Time; N],
+        q: &mut [bool; N],
+        et: &mut [C; N],
+    ) {
+        crate::simd::run(TonArray {
+            timers,
+            now: now.clock::<C>(),
+            input,
+            pt,
+            q,
+            et,
+        });
+    }
+}
+
+/// The members of one structure, in and out of [`ton_lane`].
+#[derive(Clone, Copy)]
+struct Lane<C> {
+    start: C,
+    pt: C,
+    et: C,
+    flags: u8,
+}
+
+/// One TON call without a branch: the structure after the call at clock `now` with IN = `on`
+/// and PT = `pt_in` (its Q is the Q flag, its ET the output ET). The lane of
+/// [`IecTimerOf::ton_for_arrays`] and [`IecTimerOf::ton_array`]; why it equals the reference
+/// is said at the first.
+#[inline(always)]
+fn ton_lane<C: ClockWord>(timer: Lane<C>, now: C, on: bool, pt_in: Time) -> Lane<C> {
+    use core::hint::select_unpredictable as select;
+    let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u8) << flag::KIND_SHIFT;
+    // The flags as 32-bit values: byte-wide bit arithmetic would write parts of registers,
+    // which on some CPUs (AMD Zen) makes each timer wait for the previous timer's result.
+    let f = u32::from(timer.flags);
+    let on = u32::from(on);
+    // A rise is taken as a running timer with START = now and the new PT, whose update
+    // then finds elapsed = 0 (see above): selected, not branched to.
+    let rise = on & !f & u32::from(flag::IN) != 0;
+    let start = select(rise, now, timer.start);
+    let pt = select(rise, C::from_preset(pt_in.clamp_negative()), timer.pt);
+    let run = rise | (f & u32::from(flag::RUNNING) != 0);
+    let elapsed = now.elapsed_since(start);
+    let not_reached = !reached(elapsed, pt);
+    let et = select(run, select(not_reached, elapsed, pt), timer.et);
+    // Q (bit 1) and RUNNING (bit 2) after the update: a running timer is either still
+    // running (4) or has expired with Q = 1 (2); a stopped one keeps its Q.
+    let status = select(run, 2 + 2 * u32::from(not_reached), f & u32::from(flag::Q));
+    // IN = 0 clears everything but PT.
+    let on_mask = on.wrapping_neg();
+    let status = (u32::from(flag::IN) | status) & on_mask;
+    Lane {
+        start: masked(start, (status >> 2).wrapping_neg()),
+        pt,
+        et: masked(et, on_mask),
+        flags: kind_bits | status as u8,
+    }
+}
+
+/// [`IecTimerOf::ton_array`] as a loop for [`crate::simd::run`].
+struct TonArray<'a, C, const N: usize> {
+    timers: &'a mut [IecTimerOf<C>; N],
+    now: C,
+    input: &'a [bool; N],
+    pt: &'a [Time; N],
+    q: &'a mut [bool; N],
+    et: &'a mut [C; N],
+}
+
+impl<C: ClockWord, const N: usize> crate::simd::Kernel for TonArray<'_, C, N> {
+    #[inline(always)]
+    fn run(self) {
+        let TonArray {
+            timers,
+            now,
+            input,
+            pt,
+            q,
+            et,
+        } = self;
+        ton_array_lanes(timers, now, input, pt, q, et);
+    }
+}
+
+/// Timers per group of [`IecTimerOf::ton_array`].
+const LANES: usize = 16;
+
+/// The loop of [`IecTimerOf::ton_array`]: the timers in groups of [`LANES`], the last
+/// `N % LANES` through the same code on a padded copy (the padding timers are new ones with
+/// IN = 0, whose results are dropped), so that every timer takes the one path.
+#[inline(always)]
+fn ton_array_lanes<C: ClockWord, const N: usize>(
+    timers: &mut [IecTimerOf<C>; N],
+    now: C,
+    input: &[bool; N],
+    pt: &[Time; N],
+    q: &mut [bool; N],
+    et: &mut [C; N],
+) {
+    let (timers, timers_tail) = timers.as_chunks_mut::<LANES>();
+    let (inputs, inputs_tail) = input.as_chunks::<LANES>();
+    let (presets, presets_tail) = pt.as_chunks::<LANES>();
+    let (qs, q_tail) = q.as_chunks_mut::<LANES>();
+    let (ets, et_tail) = et.as_chunks_mut::<LANES>();
+    let groups = timers
+        .iter_mut()
+        .zip(inputs.iter().zip(presets))
+        .zip(qs.iter_mut().zip(ets.iter_mut()));
+    for ((timers, (input, pt)), (q, et)) in groups {
+        ton_group(timers, now, input, pt, q, et);
+    }
+    let n = timers_tail.len();
+    if n > 0 {
+        let mut timers = [IecTimerOf::new(); LANES];
+        let mut input = [false; LANES];
+        let mut pt = [Time::ZERO; LANES];
+        let (mut q, mut et) = ([false; LANES], [C::ZERO; LANES]);
+        timers[..n].copy_from_slice(timers_tail);
+        input[..n].copy_from_slice(inputs_tail);
+        pt[..n].copy_from_slice(presets_tail);
+        ton_group(&mut timers, now, &input, &pt, &mut q, &mut et);
+        timers_tail.copy_from_slice(&timers[..n]);
+        q_tail.copy_from_slice(&q[..n]);
+        et_tail.copy_from_slice(&et[..n]);
+    }
+}
+
+/// [`LANES`] timers of [`IecTimerOf::ton_array`], every array a parameter of its own:
+/// parameters that are `&mut` are known not to overlap anything else (LLVM's `noalias`, kept
+/// when inlined), which lets the compiler keep the arrays' addresses in registers and
+/// vectorize the stores. The members are moved into arrays of their own (structure of arrays,
+/// which the lane loop vectorizes), the lane run on each, and the results moved back.
+#[inline(always)]
+fn ton_group<C: ClockWord>(
+    timers: &mut [IecTimerOf<C>; LANES],
+    now: C,
+    input: &[bool; LANES],
+    pt: &[Time; LANES],
+    q: &mut [bool; LANES],
+    et: &mut [C; LANES],
+) {
+    let mut start: [C; LANES] = core::array::from_fn(|j| timers[j].start);
+    let mut latched: [C; LANES] = core::array::from_fn(|j| timers[j].pt);
+    let mut elapsed: [C; LANES] = core::array::from_fn(|j| timers[j].et);
+    let mut flags: [u8; LANES] = core::array::from_fn(|j| timers[j].flags);
+    for j in 0..LANES {
+        let lane = Lane {
+            start: start[j],
+            pt: latched[j],
+            et: elapsed[j],
+            flags: flags[j],
+        };
+        let lane = ton_lane(lane, now, input[j], pt[j]);
+        (start[j], latched[j], elapsed[j], flags[j]) = (lane.start, lane.pt, lane.et, lane.flags);
+    }
+    for j in 0..LANES {
+        timers[j] = IecTimerOf {
+            start: start[j],
+            pt: latched[j],
+            et: elapsed[j],
+            flags: flags[j],
+        };
+        q[j] = flags[j] & flag::Q != 0;
+        et[j] = elapsed[j];
     }
 }
 
