@@ -1,7 +1,7 @@
 //! Run-time dispatch of the bulk loops to wider vector code (feature `simd-dispatch`).
 //!
-//! The bank scans and the timer area's tick are straight-line loops that LLVM vectorizes for
-//! whatever the build targets. The default x86-64 target has SSE2 only: 16 bytes per
+//! The bank scans, the array forms (`ton_array`, `call_array`) and the timer area's tick are
+//! straight-line loops that LLVM vectorizes for whatever the build targets. The default x86-64 target has SSE2 only: 16 bytes per
 //! instruction, two-operand forms (a value still needed costs a register copy), no byte or
 //! word select. A library cannot choose its users' `-C target-cpu`, but with `std` it can ask
 //! the CPU what it has (`is_x86_feature_detected!`) and run the same loop compiled for AVX2
