@@ -49,6 +49,16 @@ proptest! {
         prop_assert_eq!(rules(&m).into_iter().collect::<RuleSet>(), s, "from_iter");
         let unions = m.iter().fold(RuleSet::EMPTY, |s, &i| s.union(RuleSet::from(Rule::ALL[i])));
         prop_assert_eq!(unions, s, "union of From<Rule>");
+        // Adding a rule the set has already changes nothing (a toggle would remove it).
+        for &i in &m {
+            let r = Rule::ALL[i];
+            prop_assert_eq!(s.with(r), s, "with({}) again", r);
+            prop_assert_eq!(s.with_if(true, r), s, "with_if({}) again", r);
+            let mut again = s;
+            again.insert(r);
+            prop_assert_eq!(again, s, "insert({}) again", r);
+            prop_assert_eq!(s.union(RuleSet::of(r)), s, "union with {} again", r);
+        }
     }
 
     /// Iteration gives the rules in catalog order, with an exact size hint at every step.
