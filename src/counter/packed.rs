@@ -106,9 +106,9 @@ impl<T: CounterInt> Counter<T> {
 
 impl<T: CounterInt> Counter<T> {
     /// Every counter of an array called once as `kind`, counter `i` with the inputs at index `i`
-    /// (`inputs.cu[i]`, ..., `pv[i]`) and its outputs written to `out[i]`: the loop
-    /// `for i in 0..N { out[i] = counters[i].call_for_arrays(kind, input_i) }` (what a PLC
-    /// program's `FOR` loop over an `ARRAY OF CTU` does), in one pass that the compiler
+    /// (`inputs.cu[i]`, ..., `pv[i]`) and its outputs written at index `i` of `out`'s arrays:
+    /// the loop `for i in 0..N { let o = counters[i].call_for_arrays(kind, input_i); ... }`
+    /// (what a PLC program's `FOR` loop over an `ARRAY OF CTU` does), in one pass that the compiler
     /// vectorizes over the counters in their own layout, for the widest vector extension this
     /// CPU has with the feature `simd-dispatch`. Same counters and outputs afterwards as that
     /// loop, and as the reference called once per counter (`proofs/counter.rs`).
