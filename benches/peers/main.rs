@@ -1271,7 +1271,7 @@ fn target_line() -> String {
             compiled.join(", ")
         },
         if cfg!(feature = "simd-dispatch") {
-            "on (the bank scans and the area tick run compiled for the widest of AVX-512BW and AVX2 this CPU has)"
+            "on (the bank scans, the array forms and the area tick run compiled for the widest of AVX-512BW and AVX2 this CPU has)"
         } else {
             "off (every loop runs as compiled for the target)"
         },
