@@ -218,6 +218,23 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
             );
         }
     }
+    // An FR edge with S held clears the start memory, so S = 1 starts the timer again (every
+    // kind but S_OFFDT, which starts on a falling S): the FR edge chose that start's write, and
+    // Q carries it beside the edge (as `Explained` defines "decided").
+    let fr_restart = c.input.fr
+        && !c.state.fr_prev
+        && c.state.s_prev
+        && c.input.s
+        && !c.input.r
+        && c.kind != S5Kind::SOffdt;
+    cover!(fr_restart, "S5TMR-FR-01 an FR restart explained");
+    if fr_restart {
+        assert!(
+            e.outputs[0].contains(Rule::S5TMR_FR_01) && e.outputs[0].contains(Rule::S5TMR_EDGE_01),
+            "S5TMR-FR-01: an FR restart decided Q with the edge in {c:?}: {:?}",
+            e.outputs[0]
+        );
+    }
     let kind_rule = kind_rules[c.kind as usize];
     complete(kind_rule, s5_premise(&c, kind_rule), reported, &c);
     let was = c.state.output();
