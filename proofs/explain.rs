@@ -228,10 +228,18 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
         && !c.input.r
         && c.kind != S5Kind::SOffdt;
     cover!(fr_restart, "S5TMR-FR-01 an FR restart explained");
+    if !c.input.r {
+        // Exactly then: an FR edge that cleared a memory already 0 chose no start.
+        assert_eq!(
+            e.outputs[0].contains(Rule::S5TMR_FR_01),
+            fr_restart,
+            "S5TMR-FR-01: Q carries the FR edge exactly when it restarted the timer, in {c:?}"
+        );
+    }
     if fr_restart {
         assert!(
-            e.outputs[0].contains(Rule::S5TMR_FR_01) && e.outputs[0].contains(Rule::S5TMR_EDGE_01),
-            "S5TMR-FR-01: an FR restart decided Q with the edge in {c:?}: {:?}",
+            e.outputs[0].contains(Rule::S5TMR_EDGE_01),
+            "S5TMR-FR-01: an FR restart's Q carries the edge too, in {c:?}: {:?}",
             e.outputs[0]
         );
     }
