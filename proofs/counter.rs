@@ -249,6 +249,13 @@ proptest! {
     }
 }
 
+/// The CU, CD, R and LD of `N` counters in one scan from four words (bit `i % 64` of each is
+/// counter `i`'s), R and LD thinned out so that counting is exercised too.
+fn scan_inputs<const N: usize>([cu, cd, r, ld]: [u64; 4]) -> [[bool; N]; 4] {
+    let (r, ld) = (r & cu & cd, ld & !cu & cd);
+    [cu, cd, r, ld].map(|w| core::array::from_fn(|i| w >> (i % 64) & 1 != 0))
+}
+
 /// CNT-EQUIV-01 (the bank): a bank of `N` CTUD counters scanned with the input bits `scans`
 /// (bit `i` of each word is counter `i`'s CU, CD, R, LD) equals `N` reference counters.
 pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
@@ -263,11 +270,8 @@ pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
         }),
         "counter {N} does not exist"
     );
-    for &[cu, cd, r, ld] in scans {
-        // Thin out R and LD so that counting is exercised too.
-        let (r, ld) = (r & cu & cd, ld & !cu & cd);
-        let bits = |w: u64| -> [bool; N] { core::array::from_fn(|i| w >> (i % 64) & 1 != 0) };
-        let (bcu, bcd, br, bld) = (bits(cu), bits(cd), bits(r), bits(ld));
+    for &scan in scans {
+        let [bcu, bcd, br, bld] = scan_inputs::<N>(scan);
         bank.scan(
             &BankInputs {
                 cu: &bcu,
@@ -305,11 +309,8 @@ pub fn prop_call_array<T: CounterInt, const N: usize>(
 ) {
     let mut counters = [Counter::<T>::new(); N];
     let mut refs = [CounterRef::<T>::new(); N];
-    for (k, &[cu, cd, r, ld]) in scans.iter().enumerate() {
-        // Thin out R and LD so that counting is exercised too.
-        let (r, ld) = (r & cu & cd, ld & !cu & cd);
-        let bits = |w: u64| -> [bool; N] { core::array::from_fn(|i| w >> (i % 64) & 1 != 0) };
-        let (bcu, bcd, br, bld) = (bits(cu), bits(cd), bits(r), bits(ld));
+    for (k, &scan) in scans.iter().enumerate() {
+        let [bcu, bcd, br, bld] = scan_inputs::<N>(scan);
         // Outputs from a fill that differs scan by scan: an output left unwritten shows.
         let fill = k % 2 == 0;
         let (mut qu, mut qd) = ([fill; N], [!fill; N]);
@@ -1298,10 +1299,11 @@ fn kani_call_array() {
 
 /// The bolero harness of the CTUD bank (CNT-EQUIV-01): 2 counters, 3 scans. Symbolic: the CU,
 /// CD, R and LD bit masks of each scan (`u64` each; bits 0 and 1 are the two counters'), PV (any
-/// `i16`). `#[kani::unwind(4)]`: the 3 scans and the exit; the bank's and the check's loops over
-/// the 2 counters are shorter.
+/// `i16`). `#[kani::unwind(5)]`: the 4 input words of a scan taken apart (`scan_inputs`) and the
+/// exit, the longest; the 3 scans and the bank's and the check's loops over the 2 counters are
+/// shorter.
 #[test]
-#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_counter_bank() {
     bolero::check!()
         .with_type::<([[u64; 4]; 3], i16)>()
