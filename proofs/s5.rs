@@ -163,6 +163,11 @@ pub fn prop_cell_word(bits: u32) -> bool {
                 "S5-EQUIV-01: from_state inverts the abstraction: {bits:#010X}"
             );
             check_eq!(w.bits(), bits);
+            check_eq!(
+                (w.value(), w.base(), w.q(), w.is_running()),
+                (state.value, state.base, state.q, state.running),
+                "S5-EQUIV-01: the word's accessors read its state: {bits:#010X}"
+            );
             true
         }
         None => false,
