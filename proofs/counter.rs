@@ -256,6 +256,11 @@ fn scan_inputs<const N: usize>([cu, cd, r, ld]: [u64; 4]) -> [[bool; N]; 4] {
     [cu, cd, r, ld].map(|w| core::array::from_fn(|i| w >> (i % 64) & 1 != 0))
 }
 
+/// The inputs of `scan_inputs` as the bank and the array form take them.
+fn bank_inputs<const N: usize>([cu, cd, r, ld]: &[[bool; N]; 4]) -> BankInputs<'_, N> {
+    BankInputs { cu, cd, r, ld }
+}
+
 /// CNT-EQUIV-01 (the bank): a bank of `N` CTUD counters scanned with the input bits `scans`
 /// (bit `i` of each word is counter `i`'s CU, CD, R, LD) equals `N` reference counters.
 pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
@@ -271,16 +276,9 @@ pub fn prop_bank<T: CounterInt, const N: usize>(scans: &[[u64; 4]], pv: T) {
         "counter {N} does not exist"
     );
     for &scan in scans {
-        let [bcu, bcd, br, bld] = scan_inputs::<N>(scan);
-        bank.scan(
-            &BankInputs {
-                cu: &bcu,
-                cd: &bcd,
-                r: &br,
-                ld: &bld,
-            },
-            pv,
-        );
+        let ins = scan_inputs::<N>(scan);
+        let [bcu, bcd, br, bld] = &ins;
+        bank.scan(&bank_inputs(&ins), pv);
         for (i, c) in refs.iter_mut().enumerate() {
             let o = c.call(
                 CounterKind::Ctud,
@@ -310,7 +308,8 @@ pub fn prop_call_array<T: CounterInt, const N: usize>(
     let mut counters = [Counter::<T>::new(); N];
     let mut refs = [CounterRef::<T>::new(); N];
     for (k, &scan) in scans.iter().enumerate() {
-        let [bcu, bcd, br, bld] = scan_inputs::<N>(scan);
+        let ins = scan_inputs::<N>(scan);
+        let [bcu, bcd, br, bld] = &ins;
         // Outputs from a fill that differs scan by scan: an output left unwritten shows.
         let fill = k % 2 == 0;
         let (mut qu, mut qd) = ([fill; N], [!fill; N]);
@@ -318,12 +317,7 @@ pub fn prop_call_array<T: CounterInt, const N: usize>(
         Counter::call_array(
             &mut counters,
             kind,
-            &BankInputs {
-                cu: &bcu,
-                cd: &bcd,
-                r: &br,
-                ld: &bld,
-            },
+            &bank_inputs(&ins),
             pv,
             &mut ArrayOutputs {
                 qu: &mut qu,
