@@ -708,6 +708,16 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
     run_group(c, &group_name(family, TON_BANK), ws);
 }
 
+/// One scan's CU, CD, R and LD as the bank and `Counter::call_array` take them.
+fn bank_inputs(s: &[Box<[bool; BANK]>; 4]) -> BankInputs<'_, BANK> {
+    BankInputs {
+        cu: &s[0],
+        cd: &s[1],
+        r: &s[2],
+        ld: &s[3],
+    }
+}
+
 /// The bank of CTUD counters, or with `UP_ONLY` of CTU counters (CD and LD always 0). The
 /// kind is a constant at every call (`KIND` below), as at a call site of a PLC program (see
 /// `step_iec_kind`): every form's code for the other kinds disappears alike.
@@ -807,12 +817,7 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
                 Counter::call_array(
                     &mut counters,
                     Kind::<UP_ONLY>::KIND,
-                    &BankInputs {
-                        cu: &s[0],
-                        cd: &s[1],
-                        r: &s[2],
-                        ld: &s[3],
-                    },
+                    &bank_inputs(s),
                     &pvs,
                     &mut ArrayOutputs {
                         qu: &mut qu,
@@ -861,15 +866,7 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
         move || {
             k += 1;
             let s = &scans[k % scans.len()];
-            bank.scan(
-                &BankInputs {
-                    cu: &s[0],
-                    cd: &s[1],
-                    r: &s[2],
-                    ld: &s[3],
-                },
-                pv,
-            );
+            bank.scan(&bank_inputs(s), pv);
             black_box(&mut bank);
         },
     ));
