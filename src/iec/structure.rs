@@ -1,57 +1,50 @@
 //! The `IEC_TIMER` structure as a soft-PLC holds it: 16 bytes, `#[repr(C)]` (S7-1200 manual:
 //! "each timer uses a 16-byte IEC_Timer structure"), with IN, Q, the running status and the last
-//! instruction packed into one flag byte.
+//! instruction packed into one flag byte (held as a 32-bit word whose other bytes stay 0).
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::time::clock::ClockWord;
 use crate::time::{CpuTime, Time};
 
 /// Flag bits of [`IecTimerOf::flags`].
+///
+/// The flags are a 32-bit word (the flag byte of the 16-byte structure and the three bytes after
+/// it, which stay 0), and every operation on them is 32 bits wide: byte-wide arithmetic writes
+/// part of a register, and on AMD Zen the result then waits for that register's previous
+/// value, which chained each call of a single step to the previous call (measured: see
+/// `IecTimerOps::call` for [`IecTimerOf`]); and a structure of four 32-bit words is moved in and
+/// out of vector registers by [`IecTimerOf::ton_array`] with whole-word shuffles, where a flag
+/// byte took one insert and one extract per timer.
 mod flag {
     /// IN as the last call saw it.
-    pub const IN: u8 = 0b0000_0001;
+    pub const IN: u32 = 0b0000_0001;
     /// Q.
-    pub const Q: u8 = 0b0000_0010;
+    pub const Q: u32 = 0b0000_0010;
     /// Timing.
-    pub const RUNNING: u8 = 0b0000_0100;
+    pub const RUNNING: u32 = 0b0000_0100;
     /// Bits 4-5 hold the last instruction's kind; this bit says one has run.
-    pub const KIND_VALID: u8 = 0b0100_0000;
+    pub const KIND_VALID: u32 = 0b0100_0000;
     /// Shift of the kind field.
-    pub const KIND_SHIFT: u8 = 4;
+    pub const KIND_SHIFT: u32 = 4;
     /// Every bit in use.
-    pub const ALL: u8 = IN | Q | RUNNING | KIND_VALID | (0b11 << KIND_SHIFT);
-
-    /// The bits as 32-bit values, for the flag arithmetic of one call: byte-wide arithmetic
-    /// writes part of a register, and on AMD Zen the result then waits for that register's
-    /// previous value, which chains each call to the one before it (measured: see
-    /// `IecTimerOps::call` for [`super::IecTimerOf`]).
-    pub mod wide {
-        /// [`super::IN`].
-        pub const IN: u32 = super::IN as u32;
-        /// [`super::Q`].
-        pub const Q: u32 = super::Q as u32;
-        /// [`super::RUNNING`].
-        pub const RUNNING: u32 = super::RUNNING as u32;
-    }
+    pub const ALL: u32 = IN | Q | RUNNING | KIND_VALID | (0b11 << KIND_SHIFT);
 
     // The five fields are disjoint (their sum is their union), so combining them with `|`, `^`
     // or `+` is the same and clearing one (`flags & !MASK`) keeps the others.
-    const _: () = assert!(
-        IN as u16 + Q as u16 + RUNNING as u16 + KIND_VALID as u16 + (0b11u16 << KIND_SHIFT)
-            == ALL as u16
-    );
+    const _: () = assert!(IN + Q + RUNNING + KIND_VALID + (0b11 << KIND_SHIFT) == ALL);
+    // The flag byte: every bit below 2^8.
+    const _: () = assert!(ALL < 0x100);
 }
 
-/// Q while running, by kind code (TP, TON, TOF, TONR), as a mask of [`flag::Q`].
-const Q_RUNNING: [u8; 4] = [flag::Q, 0, flag::Q, 0];
+const Q_RUNNING: [u32; 4] = [flag::Q, 0, flag::Q, 0];
 /// Q after expiry, by kind code.
-const Q_EXPIRED: [u8; 4] = [0, flag::Q, 0, flag::Q];
+const Q_EXPIRED: [u32; 4] = [0, flag::Q, 0, flag::Q];
 
 const fn code(kind: IecKind) -> usize {
     kind as usize
 }
 
-const fn kind_of(code: u8) -> IecKind {
+const fn kind_of(code: u32) -> IecKind {
     match code & 0b11 {
         0 => IecKind::Tp,
         1 => IecKind::Ton,
@@ -62,8 +55,9 @@ const fn kind_of(code: u8) -> IecKind {
 
 /// The `IEC_TIMER` structure over a clock word `C`.
 ///
-/// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each), one
-/// flag byte, three bytes of padding. The fields are private: every structure this type holds is
+/// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each) and a
+/// word of flags, whose first byte (in memory order on a little-endian CPU; in
+/// [`IecTimer::to_bytes`] on any) holds them and whose other three bytes stay 0. The fields are private: every structure this type holds is
 /// one the operations can reach ([`IecTimerOf::from_state`] checks).
 ///
 /// ```
@@ -83,7 +77,7 @@ pub struct IecTimerOf<C = u32> {
     start: C,
     pt: C,
     et: C,
-    flags: u8,
+    flags: u32,
 }
 
 /// The S7-1200 `IEC_TIMER`: the structure on the 32-bit millisecond clock.
@@ -138,7 +132,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         flags |= if state.q { flag::Q } else { 0 };
         flags |= if state.running { flag::RUNNING } else { 0 };
         if let Some(kind) = state.kind {
-            flags |= flag::KIND_VALID | (kind as u8) << flag::KIND_SHIFT;
+            flags |= flag::KIND_VALID | (kind as u32) << flag::KIND_SHIFT;
         }
         Some(IecTimerOf {
             start: state.start,
@@ -165,8 +159,8 @@ impl<C: ClockWord> IecTimerOf<C> {
 }
 
 impl IecTimer {
-    /// The 16 bytes of the structure in its memory layout (native byte order): START, PT, ET,
-    /// the flag byte, three zero bytes. For saving a retentive structure.
+    /// The 16 bytes of the structure: START, PT, ET (native byte order), the flag byte, three
+    /// zero bytes (the memory layout on a little-endian CPU). For saving a retentive structure.
     ///
     /// ```
     /// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
@@ -180,7 +174,8 @@ impl IecTimer {
         b[0..4].copy_from_slice(&self.start.to_ne_bytes());
         b[4..8].copy_from_slice(&self.pt.to_ne_bytes());
         b[8..12].copy_from_slice(&self.et.to_ne_bytes());
-        b[12] = self.flags;
+        // The flags are below 2^8 (`flag::ALL`): the byte holds them all.
+        b[12] = self.flags as u8;
         b
     }
 
@@ -202,7 +197,7 @@ impl IecTimer {
             start: word(0),
             pt: word(4),
             et: word(8),
-            flags: bytes[12],
+            flags: u32::from(bytes[12]),
         };
         let valid =
             bytes[13..] == [0, 0, 0] && t.flags & !flag::ALL == 0 && t.abstraction().is_valid();
@@ -238,6 +233,16 @@ impl<C: ClockWord> IecTimerOf<C> {
         }
     }
 
+    /// The update of a read through the structure (IEC-ACCESS-01), as the instruction of the
+    /// last call (none before the first call).
+    #[inline]
+    fn update_on_read(&mut self, now: C) {
+        if self.flags & flag::KIND_VALID != 0 {
+            // The kind field has two bits: an index below 4.
+            self.update(now, ((self.flags >> flag::KIND_SHIFT) & 0b11) as usize);
+        }
+    }
+
     #[inline]
     fn stop_clear(&mut self) {
         self.start = C::default();
@@ -246,9 +251,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     }
 }
 
-use flag::wide;
-
-/// `mask` where `on`, else 0: a flag bit in a 32-bit word (see [`flag::wide`]).
+/// `mask` where `on`, else 0: a flag bit.
 #[inline(always)]
 fn bit(on: bool, mask: u32) -> u32 {
     u32::from(on) * mask
@@ -277,7 +280,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         self.start = if runs { now } else { C::ZERO };
         self.pt = pt;
         self.et = C::ZERO;
-        self.flags = (flags | bit(runs, wide::RUNNING) | bit(q, wide::Q)) as u8;
+        self.flags = flags | bit(runs, flag::RUNNING) | bit(q, flag::Q);
         IecOutput { q, et: C::ZERO }
     }
 
@@ -292,7 +295,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         let et = if expired { self.pt } else { elapsed };
         self.start = if expired { C::ZERO } else { self.start };
         self.et = et;
-        self.flags = (flags | bit(!expired, wide::RUNNING) | bit(q, wide::Q)) as u8;
+        self.flags = flags | bit(!expired, flag::RUNNING) | bit(q, flag::Q);
         IecOutput { q, et }
     }
 
@@ -300,8 +303,8 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// member (Q, ET, START = 0 and PT as they are).
     #[inline(always)]
     fn idle(&mut self, flags: u32) -> IecOutput<C> {
-        let q = u32::from(self.flags) & wide::Q;
-        self.flags = (flags | q) as u8;
+        let q = self.flags & flag::Q;
+        self.flags = flags | q;
         IecOutput {
             q: q != 0,
             et: self.et,
@@ -313,7 +316,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     fn clear(&mut self, flags: u32, q: bool) -> IecOutput<C> {
         self.start = C::ZERO;
         self.et = C::ZERO;
-        self.flags = (flags | bit(q, wide::Q)) as u8;
+        self.flags = flags | bit(q, flag::Q);
         IecOutput { q, et: C::ZERO }
     }
 }
@@ -356,7 +359,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// is kept on both paths). `select_unpredictable` keeps each choice a conditional move,
     /// which the compiler would otherwise be free to turn back into a branch (it did, in a
     /// loop over an array, when this was written with `if`). Q and RUNNING are computed as
-    /// the bits they are in the flag byte: a running timer's go to 4 (still running) or 2
+    /// the bits they are in the flags: a running timer's go to 4 (still running) or 2
     /// (expired, Q = 1), which is `2 + 2 * not_reached`.
     #[inline]
     pub fn ton_for_arrays(&mut self, now: CpuTime, input: IecInput) -> IecOutput<C> {
@@ -428,7 +431,7 @@ struct Lane<C> {
     start: C,
     pt: C,
     et: C,
-    flags: u8,
+    flags: u32,
 }
 
 /// One TON call without a branch: the structure after the call at clock `now` with IN = `on`
@@ -438,31 +441,29 @@ struct Lane<C> {
 #[inline(always)]
 fn ton_lane<C: ClockWord>(timer: Lane<C>, now: C, on: bool, pt_in: Time) -> Lane<C> {
     use core::hint::select_unpredictable as select;
-    let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u8) << flag::KIND_SHIFT;
-    // The flags as 32-bit values: byte-wide bit arithmetic would write parts of registers,
-    // which on some CPUs (AMD Zen) makes each timer wait for the previous timer's result.
-    let f = u32::from(timer.flags);
+    let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u32) << flag::KIND_SHIFT;
+    let f = timer.flags;
     let on = u32::from(on);
     // A rise is taken as a running timer with START = now and the new PT, whose update
     // then finds elapsed = 0 (see above): selected, not branched to.
-    let rise = on & !f & u32::from(flag::IN) != 0;
+    let rise = on & !f & flag::IN != 0;
     let start = select(rise, now, timer.start);
     let pt = select(rise, C::from_preset(pt_in.clamp_negative()), timer.pt);
-    let run = rise | (f & u32::from(flag::RUNNING) != 0);
+    let run = rise | (f & flag::RUNNING != 0);
     let elapsed = now.elapsed_since(start);
     let not_reached = !reached(elapsed, pt);
     let et = select(run, select(not_reached, elapsed, pt), timer.et);
     // Q (bit 1) and RUNNING (bit 2) after the update: a running timer is either still
     // running (4) or has expired with Q = 1 (2); a stopped one keeps its Q.
-    let status = select(run, 2 + 2 * u32::from(not_reached), f & u32::from(flag::Q));
+    let status = select(run, 2 + 2 * u32::from(not_reached), f & flag::Q);
     // IN = 0 clears everything but PT.
     let on_mask = on.wrapping_neg();
-    let status = (u32::from(flag::IN) | status) & on_mask;
+    let status = (flag::IN | status) & on_mask;
     Lane {
         start: masked(start, (status >> 2).wrapping_neg()),
         pt,
         et: masked(et, on_mask),
-        flags: kind_bits | status as u8,
+        flags: kind_bits | status,
     }
 }
 
@@ -551,7 +552,7 @@ fn ton_group<C: ClockWord>(
     let mut start: [C; LANES] = core::array::from_fn(|j| timers[j].start);
     let mut latched: [C; LANES] = core::array::from_fn(|j| timers[j].pt);
     let mut elapsed: [C; LANES] = core::array::from_fn(|j| timers[j].et);
-    let mut flags: [u8; LANES] = core::array::from_fn(|j| timers[j].flags);
+    let mut flags: [u32; LANES] = core::array::from_fn(|j| timers[j].flags);
     for j in 0..LANES {
         let lane = Lane {
             start: start[j],
@@ -584,10 +585,9 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     /// constant at every call site of a program, and the `match` on it disappears when the
     /// call is inlined; the call is always inlined, so that the compiler sees the fields of
     /// the input from the start (inlined late, it had packed the input into one integer and
-    /// unpacked it again on every call). The flag byte is computed in 32-bit words (`wide`):
-    /// in bytes, each call waited for the previous call's flag arithmetic (measured in
-    /// `benches/peers`: TON on random inputs 1.49 → 1.35 ns, TONR on square waves 1.23 → 1.06
-    /// ns). Selecting the update's outcome instead of branching on the expiry, tried for TP,
+    /// unpacked it again on every call). The flags are computed in 32-bit words: in bytes,
+    /// each call waited for the previous call's flag arithmetic (measured in `benches/peers`:
+    /// TON on random inputs 1.49 → 1.35 ns, TONR on square waves 1.23 → 1.06 ns). Selecting the update's outcome instead of branching on the expiry, tried for TP,
     /// TON and TOF, cost more on square waves (0.1-0.25 ns) than it saved on random inputs.
     ///
     /// Why each kind equals the reference ([`super::IecTimerRef`]): `begin` is
@@ -599,12 +599,12 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline(always)]
     fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
         let now = now.clock::<C>();
-        let f = u32::from(self.flags);
-        let was_in = f & wide::IN != 0;
-        let running = f & wide::RUNNING != 0;
+        let f = self.flags;
+        let was_in = f & flag::IN != 0;
+        let running = f & flag::RUNNING != 0;
         let on = input.input;
-        let kind_bits = u32::from(flag::KIND_VALID | (code(kind) as u8) << flag::KIND_SHIFT);
-        let flags = kind_bits | bit(on, wide::IN);
+        let kind_bits = flag::KIND_VALID | (code(kind) as u32) << flag::KIND_SHIFT;
+        let flags = kind_bits | bit(on, flag::IN);
         match kind {
             // TP: update; a rising IN with no pulse running starts one; stopped with IN = 0,
             // ET returns to 0. A pulse still running after the update ignores IN.
@@ -613,7 +613,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     let elapsed = now.elapsed_since(self.start);
                     if !reached(elapsed, self.pt) {
                         self.et = elapsed;
-                        self.flags = (flags | wide::RUNNING | wide::Q) as u8;
+                        self.flags = flags | flag::RUNNING | flag::Q;
                         return IecOutput {
                             q: true,
                             et: elapsed,
@@ -626,15 +626,15 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     }
                     let et = if on { self.pt } else { C::ZERO };
                     self.et = et;
-                    self.flags = flags as u8;
+                    self.flags = flags;
                     return IecOutput { q: false, et };
                 }
                 // Stopped: Q kept; with IN = 0, ET returns to 0; a rising IN starts a pulse;
                 // IN held at 1 keeps ET.
-                let q = f & wide::Q;
+                let q = f & flag::Q;
                 if !on {
                     self.et = C::ZERO;
-                    self.flags = (flags | q) as u8;
+                    self.flags = flags | q;
                     return IecOutput {
                         q: q != 0,
                         et: C::ZERO,
@@ -643,7 +643,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 if !was_in {
                     return self.begin(now, input.pt, flags, true, false);
                 }
-                self.flags = (flags | q) as u8;
+                self.flags = flags | q;
                 IecOutput {
                     q: q != 0,
                     et: self.et,
@@ -659,7 +659,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
             IecKind::Ton => {
                 if !on {
                     self.clear(flags, false)
-                } else if f & (wide::IN | wide::RUNNING) == wide::IN | wide::RUNNING {
+                } else if f & (flag::IN | flag::RUNNING) == flag::IN | flag::RUNNING {
                     self.advance(now, flags, false, true)
                 } else if !was_in {
                     self.begin(now, input.pt, flags, false, true)
@@ -692,7 +692,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     if reached(elapsed, self.pt) {
                         self.start = C::ZERO;
                         self.et = self.pt;
-                        self.flags = (flags | wide::Q) as u8;
+                        self.flags = flags | flag::Q;
                         return IecOutput {
                             q: true,
                             et: self.pt,
@@ -700,16 +700,16 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     }
                     self.et = elapsed;
                     if on {
-                        self.flags = (flags | wide::RUNNING) as u8;
+                        self.flags = flags | flag::RUNNING;
                     } else {
                         self.start = C::ZERO;
-                        self.flags = flags as u8;
+                        self.flags = flags;
                     }
                     IecOutput {
                         q: false,
                         et: elapsed,
                     }
-                } else if on && f & wide::Q == 0 {
+                } else if on && f & flag::Q == 0 {
                     // Resume: the update that follows the reference's `start` finds `now -
                     // START` = the accumulated ET (exactly: START = now - ET modulo 2^BITS), so
                     // the timer has expired at once when ET reaches the new PT; else it runs
@@ -718,11 +718,11 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     self.pt = pt;
                     if reached(self.et, pt) {
                         self.et = pt;
-                        self.flags = (flags | wide::Q) as u8;
+                        self.flags = flags | flag::Q;
                         return IecOutput { q: true, et: pt };
                     }
                     self.start = now.elapsed_since(self.et);
-                    self.flags = (flags | wide::RUNNING) as u8;
+                    self.flags = flags | flag::RUNNING;
                     IecOutput {
                         q: false,
                         et: self.et,
@@ -736,23 +736,13 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
 
     #[inline]
     fn read_q(&mut self, now: CpuTime) -> bool {
-        if self.flags & flag::KIND_VALID != 0 {
-            self.update(
-                now.clock(),
-                usize::from((self.flags >> flag::KIND_SHIFT) & 0b11),
-            );
-        }
+        self.update_on_read(now.clock());
         self.flags & flag::Q != 0
     }
 
     #[inline]
     fn read_et(&mut self, now: CpuTime) -> C {
-        if self.flags & flag::KIND_VALID != 0 {
-            self.update(
-                now.clock(),
-                usize::from((self.flags >> flag::KIND_SHIFT) & 0b11),
-            );
-        }
+        self.update_on_read(now.clock());
         self.et
     }
 
