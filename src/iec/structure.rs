@@ -1,20 +1,20 @@
 //! The `IEC_TIMER` structure as a soft-PLC holds it: 16 bytes, `#[repr(C)]` (S7-1200 manual:
 //! "each timer uses a 16-byte IEC_Timer structure"), with IN, Q, the running status and the last
-//! instruction packed into one flag byte (held as a 32-bit word whose other bytes stay 0).
+//! instruction packed into one flag byte, followed by three zero bytes.
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::time::clock::ClockWord;
 use crate::time::{CpuTime, Time};
 
-/// Flag bits of [`IecTimerOf::flags`].
+/// Flag bits of the flag byte ([`IecTimerOf::flags`]).
 ///
-/// The flags are a 32-bit word (the flag byte of the 16-byte structure and the three bytes after
-/// it, which stay 0), and every operation on them is 32 bits wide: byte-wide arithmetic writes
-/// part of a register, and on AMD Zen the result then waits for that register's previous
-/// value, which chained each call of a single step to the previous call (measured: see
-/// `IecTimerOps::call` for [`IecTimerOf`]); and a structure of four 32-bit words is moved in and
-/// out of vector registers by [`IecTimerOf::ton_array`] with whole-word shuffles, where a flag
-/// byte took one insert and one extract per timer.
+/// The byte is stored as a byte (a single step writes one byte), and every operation on the
+/// flags is 32 bits wide: byte-wide arithmetic writes part of a register, and on AMD Zen the
+/// result then waits for that register's previous value, which chained each call of a single
+/// step to the previous call (measured: see `IecTimerOps::call` for [`IecTimerOf`]).
+/// [`IecTimerOf::ton_array`] reads and writes the flag byte with the three zero bytes after it as
+/// one 32-bit word: four whole words per timer move in and out of vector registers with
+/// word shuffles, where a lone byte took one insert and one extract per timer.
 mod flag {
     /// IN as the last call saw it.
     pub const IN: u32 = 0b0000_0001;
@@ -55,10 +55,9 @@ const fn kind_of(code: u32) -> IecKind {
 
 /// The `IEC_TIMER` structure over a clock word `C`.
 ///
-/// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each) and a
-/// word of flags, whose first byte (in memory order on a little-endian CPU; in
-/// [`IecTimer::to_bytes`] on any) holds them and whose other three bytes stay 0. The fields are private: every structure this type holds is
-/// one the operations can reach ([`IecTimerOf::from_state`] checks).
+/// On the 32-bit clock ([`IecTimer`]) it is exactly 16 bytes: START, PT, ET (4 bytes each), one
+/// flag byte and three bytes that stay 0. The fields are private: every structure this type
+/// holds is one the operations can reach ([`IecTimerOf::from_state`] checks).
 ///
 /// ```
 /// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
@@ -77,7 +76,47 @@ pub struct IecTimerOf<C = u32> {
     start: C,
     pt: C,
     et: C,
-    flags: u32,
+    /// The flags (`flag`), below 2^8.
+    flag_byte: u8,
+    /// Always 0: with the flag byte, the structure's last 32-bit word, which
+    /// [`IecTimerOf::ton_array`] moves whole.
+    zero: [u8; 3],
+}
+
+impl<C: ClockWord> IecTimerOf<C> {
+    /// The flags, in a 32-bit word for the arithmetic (see `flag`).
+    #[inline(always)]
+    fn flags(&self) -> u32 {
+        u32::from(self.flag_byte)
+    }
+
+    /// Stores `flags` (below 2^8: `flag::ALL`) in the flag byte: a single step writes one byte.
+    #[inline(always)]
+    fn set_flags(&mut self, flags: u32) {
+        self.flag_byte = flags as u8;
+    }
+
+    /// The structure's last word, the flag byte and the three zero bytes (the flags, as the
+    /// zero bytes are 0): read as one 32-bit word, so that [`IecTimerOf::ton_array`] moves four
+    /// whole words per timer.
+    #[inline(always)]
+    fn flag_word(&self) -> u32 {
+        let [a, b, c] = self.zero;
+        u32::from_le_bytes([self.flag_byte, a, b, c])
+    }
+
+    /// The structure with these members, `flags` below 2^8, written as four whole words.
+    #[inline(always)]
+    fn from_words(start: C, pt: C, et: C, flags: u32) -> IecTimerOf<C> {
+        let [flag_byte, a, b, c] = flags.to_le_bytes();
+        IecTimerOf {
+            start,
+            pt,
+            et,
+            flag_byte,
+            zero: [a, b, c],
+        }
+    }
 }
 
 /// The S7-1200 `IEC_TIMER`: the structure on the 32-bit millisecond clock.
@@ -110,7 +149,8 @@ impl<C: ClockWord> IecTimerOf<C> {
             start: C::ZERO,
             pt: C::ZERO,
             et: C::ZERO,
-            flags: 0,
+            flag_byte: 0,
+            zero: [0; 3],
         }
     }
 
@@ -134,18 +174,18 @@ impl<C: ClockWord> IecTimerOf<C> {
         if let Some(kind) = state.kind {
             flags |= flag::KIND_VALID | (kind as u32) << flag::KIND_SHIFT;
         }
-        Some(IecTimerOf {
-            start: state.start,
-            pt: state.pt,
-            et: state.et,
+        Some(IecTimerOf::from_words(
+            state.start,
+            state.pt,
+            state.et,
             flags,
-        })
+        ))
     }
 
     /// The abstraction function: the reference state this structure represents (also
     /// [`IecTimerOps::state`]).
     fn abstraction(&self) -> IecState<C> {
-        let f = self.flags;
+        let f = self.flags();
         IecState {
             kind: (f & flag::KIND_VALID != 0).then(|| kind_of(f >> flag::KIND_SHIFT)),
             input: f & flag::IN != 0,
@@ -159,8 +199,8 @@ impl<C: ClockWord> IecTimerOf<C> {
 }
 
 impl IecTimer {
-    /// The 16 bytes of the structure: START, PT, ET (native byte order), the flag byte, three
-    /// zero bytes (the memory layout on a little-endian CPU). For saving a retentive structure.
+    /// The 16 bytes of the structure in its memory layout (native byte order): START, PT, ET,
+    /// the flag byte, three zero bytes. For saving a retentive structure.
     ///
     /// ```
     /// use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
@@ -174,8 +214,7 @@ impl IecTimer {
         b[0..4].copy_from_slice(&self.start.to_ne_bytes());
         b[4..8].copy_from_slice(&self.pt.to_ne_bytes());
         b[8..12].copy_from_slice(&self.et.to_ne_bytes());
-        // The flags are below 2^8 (`flag::ALL`): the byte holds them all.
-        b[12] = self.flags as u8;
+        b[12] = self.flag_byte;
         b
     }
 
@@ -197,10 +236,11 @@ impl IecTimer {
             start: word(0),
             pt: word(4),
             et: word(8),
-            flags: u32::from(bytes[12]),
+            flag_byte: bytes[12],
+            zero: [bytes[13], bytes[14], bytes[15]],
         };
         let valid =
-            bytes[13..] == [0, 0, 0] && t.flags & !flag::ALL == 0 && t.abstraction().is_valid();
+            t.zero == [0, 0, 0] && t.flags() & !flag::ALL == 0 && t.abstraction().is_valid();
         valid.then_some(t)
     }
 }
@@ -219,17 +259,17 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// The update for instruction code `k`: one subtraction and one compare on the hot path.
     #[inline]
     fn update(&mut self, now: C, k: usize) {
-        if self.flags & flag::RUNNING == 0 {
+        if self.flags() & flag::RUNNING == 0 {
             return;
         }
         let elapsed = now.elapsed_since(self.start);
         if reached(elapsed, self.pt) {
             self.et = self.pt;
             self.start = C::default();
-            self.flags = (self.flags & !(flag::RUNNING | flag::Q)) | Q_EXPIRED[k];
+            self.set_flags((self.flags() & !(flag::RUNNING | flag::Q)) | Q_EXPIRED[k]);
         } else {
             self.et = elapsed;
-            self.flags = (self.flags & !flag::Q) | Q_RUNNING[k];
+            self.set_flags((self.flags() & !flag::Q) | Q_RUNNING[k]);
         }
     }
 
@@ -237,9 +277,9 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// last call (none before the first call).
     #[inline]
     fn update_on_read(&mut self, now: C) {
-        if self.flags & flag::KIND_VALID != 0 {
+        if self.flags() & flag::KIND_VALID != 0 {
             // The kind field has two bits: an index below 4.
-            self.update(now, ((self.flags >> flag::KIND_SHIFT) & 0b11) as usize);
+            self.update(now, ((self.flags() >> flag::KIND_SHIFT) & 0b11) as usize);
         }
     }
 
@@ -247,7 +287,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     fn stop_clear(&mut self) {
         self.start = C::default();
         self.et = C::default();
-        self.flags &= !(flag::RUNNING | flag::Q);
+        self.set_flags(self.flags() & !(flag::RUNNING | flag::Q));
     }
 }
 
@@ -280,7 +320,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         self.start = if runs { now } else { C::ZERO };
         self.pt = pt;
         self.et = C::ZERO;
-        self.flags = flags | bit(runs, flag::RUNNING) | bit(q, flag::Q);
+        self.set_flags(flags | bit(runs, flag::RUNNING) | bit(q, flag::Q));
         IecOutput { q, et: C::ZERO }
     }
 
@@ -295,7 +335,7 @@ impl<C: ClockWord> IecTimerOf<C> {
         let et = if expired { self.pt } else { elapsed };
         self.start = if expired { C::ZERO } else { self.start };
         self.et = et;
-        self.flags = flags | bit(!expired, flag::RUNNING) | bit(q, flag::Q);
+        self.set_flags(flags | bit(!expired, flag::RUNNING) | bit(q, flag::Q));
         IecOutput { q, et }
     }
 
@@ -303,8 +343,8 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// member (Q, ET, START = 0 and PT as they are).
     #[inline(always)]
     fn idle(&mut self, flags: u32) -> IecOutput<C> {
-        let q = self.flags & flag::Q;
-        self.flags = flags | q;
+        let q = self.flags() & flag::Q;
+        self.set_flags(flags | q);
         IecOutput {
             q: q != 0,
             et: self.et,
@@ -316,7 +356,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     fn clear(&mut self, flags: u32, q: bool) -> IecOutput<C> {
         self.start = C::ZERO;
         self.et = C::ZERO;
-        self.flags = flags | bit(q, flag::Q);
+        self.set_flags(flags | bit(q, flag::Q));
         IecOutput { q, et: C::ZERO }
     }
 }
@@ -369,13 +409,13 @@ impl<C: ClockWord> IecTimerOf<C> {
                 start: self.start,
                 pt: self.pt,
                 et: self.et,
-                flags: self.flags,
+                flags: self.flags(),
             },
             now,
             input.input,
             input.pt,
         );
-        (self.start, self.pt, self.et, self.flags) = (lane.start, lane.pt, lane.et, lane.flags);
+        *self = IecTimerOf::from_words(lane.start, lane.pt, lane.et, lane.flags);
         IecOutput {
             q: lane.flags & flag::Q != 0,
             et: lane.et,
@@ -552,7 +592,7 @@ fn ton_group<C: ClockWord>(
     let mut start: [C; LANES] = core::array::from_fn(|j| timers[j].start);
     let mut latched: [C; LANES] = core::array::from_fn(|j| timers[j].pt);
     let mut elapsed: [C; LANES] = core::array::from_fn(|j| timers[j].et);
-    let mut flags: [u32; LANES] = core::array::from_fn(|j| timers[j].flags);
+    let mut flags: [u32; LANES] = core::array::from_fn(|j| timers[j].flag_word());
     for j in 0..LANES {
         let lane = Lane {
             start: start[j],
@@ -564,12 +604,7 @@ fn ton_group<C: ClockWord>(
         (start[j], latched[j], elapsed[j], flags[j]) = (lane.start, lane.pt, lane.et, lane.flags);
     }
     for j in 0..LANES {
-        timers[j] = IecTimerOf {
-            start: start[j],
-            pt: latched[j],
-            et: elapsed[j],
-            flags: flags[j],
-        };
+        timers[j] = IecTimerOf::from_words(start[j], latched[j], elapsed[j], flags[j]);
         q[j] = flags[j] & flag::Q != 0;
         et[j] = elapsed[j];
     }
@@ -599,7 +634,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline(always)]
     fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
         let now = now.clock::<C>();
-        let f = self.flags;
+        let f = self.flags();
         let was_in = f & flag::IN != 0;
         let running = f & flag::RUNNING != 0;
         let on = input.input;
@@ -613,7 +648,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     let elapsed = now.elapsed_since(self.start);
                     if !reached(elapsed, self.pt) {
                         self.et = elapsed;
-                        self.flags = flags | flag::RUNNING | flag::Q;
+                        self.set_flags(flags | flag::RUNNING | flag::Q);
                         return IecOutput {
                             q: true,
                             et: elapsed,
@@ -626,7 +661,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     }
                     let et = if on { self.pt } else { C::ZERO };
                     self.et = et;
-                    self.flags = flags;
+                    self.set_flags(flags);
                     return IecOutput { q: false, et };
                 }
                 // Stopped: Q kept; with IN = 0, ET returns to 0; a rising IN starts a pulse;
@@ -634,7 +669,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 let q = f & flag::Q;
                 if !on {
                     self.et = C::ZERO;
-                    self.flags = flags | q;
+                    self.set_flags(flags | q);
                     return IecOutput {
                         q: q != 0,
                         et: C::ZERO,
@@ -643,7 +678,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 if !was_in {
                     return self.begin(now, input.pt, flags, true, false);
                 }
-                self.flags = flags | q;
+                self.set_flags(flags | q);
                 IecOutput {
                     q: q != 0,
                     et: self.et,
@@ -692,7 +727,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     if reached(elapsed, self.pt) {
                         self.start = C::ZERO;
                         self.et = self.pt;
-                        self.flags = flags | flag::Q;
+                        self.set_flags(flags | flag::Q);
                         return IecOutput {
                             q: true,
                             et: self.pt,
@@ -700,10 +735,10 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     }
                     self.et = elapsed;
                     if on {
-                        self.flags = flags | flag::RUNNING;
+                        self.set_flags(flags | flag::RUNNING);
                     } else {
                         self.start = C::ZERO;
-                        self.flags = flags;
+                        self.set_flags(flags);
                     }
                     IecOutput {
                         q: false,
@@ -718,11 +753,11 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     self.pt = pt;
                     if reached(self.et, pt) {
                         self.et = pt;
-                        self.flags = flags | flag::Q;
+                        self.set_flags(flags | flag::Q);
                         return IecOutput { q: true, et: pt };
                     }
                     self.start = now.elapsed_since(self.et);
-                    self.flags = flags | flag::RUNNING;
+                    self.set_flags(flags | flag::RUNNING);
                     IecOutput {
                         q: false,
                         et: self.et,
@@ -737,7 +772,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     #[inline]
     fn read_q(&mut self, now: CpuTime) -> bool {
         self.update_on_read(now.clock());
-        self.flags & flag::Q != 0
+        self.flags() & flag::Q != 0
     }
 
     #[inline]
@@ -748,7 +783,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
 
     fn reset_timer(&mut self) {
         self.stop_clear();
-        self.flags &= !flag::IN;
+        self.set_flags(self.flags() & !flag::IN);
     }
 
     fn preset_timer(&mut self, pt: Time) {
