@@ -621,9 +621,10 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     /// call is inlined; the call is always inlined, so that the compiler sees the fields of
     /// the input from the start (inlined late, it had packed the input into one integer and
     /// unpacked it again on every call). The flags are computed in 32-bit words: in bytes,
-    /// each call waited for the previous call's flag arithmetic (measured in `benches/peers`:
-    /// TON on random inputs 1.49 → 1.35 ns, TONR on square waves 1.23 → 1.06 ns). Selecting the update's outcome instead of branching on the expiry, tried for TP,
-    /// TON and TOF, cost more on square waves (0.1-0.25 ns) than it saved on random inputs.
+    /// each call waited for the previous call's flag arithmetic (measured in `benches/peers`,
+    /// on random inputs: TON 1.49 → 1.21-1.48 ns, TOF 1.43 → 1.27-1.37 ns across builds).
+    /// Selecting the update's outcome instead of branching on the expiry, tried for TP, TON
+    /// and TOF, cost more on square waves (0.1-0.25 ns) than it saved on random inputs.
     ///
     /// Why each kind equals the reference ([`super::IecTimerRef`]): `begin` is
     /// its `start` + `update` at one instant, `advance` its `update` of a running
