@@ -331,6 +331,93 @@ fn exhaustive_cell_words() {
     }
 }
 
+/// `TimerMemory::set_state` over every valid state (96 000) on the middle timer of three: the
+/// timer then holds exactly that state (`get`), its neighbours keep theirs, and `Ok(true)` says
+/// so; an invalid state (value above 999, an expiry status on a stopped timer) is refused with
+/// `Ok(false)` and changes nothing; an index past the area is an error. The oracle is the state
+/// itself.
+#[test]
+fn exhaustive_area_set_state() {
+    let running = S5State {
+        running: true,
+        value: 500,
+        base: TimeBase::Ms100,
+        q: true,
+        q_on_expiry: false,
+        s_prev: true,
+        fr_prev: false,
+    };
+    let expired = S5State {
+        running: false,
+        value: 0,
+        base: TimeBase::S10,
+        q: true,
+        q_on_expiry: false,
+        s_prev: false,
+        fr_prev: true,
+    };
+    let mut area = TimerMemory::<3>::new();
+    check_eq!(
+        area.set_state(0, running),
+        Ok(true),
+        "set_state: a valid state is taken"
+    );
+    check_eq!(
+        area.set_state(2, expired),
+        Ok(true),
+        "set_state: a valid state is taken"
+    );
+    let mut n = 0u32;
+    for state in all_states() {
+        check_eq!(
+            area.set_state(1, state),
+            Ok(true),
+            "set_state: {state:?} is valid"
+        );
+        check_eq!(
+            area.get(1),
+            Ok(state),
+            "set_state: the timer holds the state set"
+        );
+        check!(
+            area.get(0) == Ok(running) && area.get(2) == Ok(expired),
+            "set_state: the other timers keep their states ({state:?})"
+        );
+        check!(
+            area.set_state(3, state).is_err(),
+            "set_state: no timer 3 in an area of 3"
+        );
+        n += 1;
+    }
+    check_eq!(n, 96_000);
+    let before = area.get(1);
+    for bad in [
+        S5State {
+            value: 1000,
+            ..running
+        },
+        S5State {
+            value: u16::MAX,
+            ..expired
+        },
+        S5State {
+            q_on_expiry: true,
+            ..expired
+        },
+    ] {
+        check_eq!(
+            area.set_state(1, bad),
+            Ok(false),
+            "set_state: {bad:?} is refused"
+        );
+        check_eq!(
+            area.get(1),
+            before,
+            "set_state: a refused state changes nothing"
+        );
+    }
+}
+
 /// Exhaustive over TV: all 4 000 valid S5TIME words x every kind x edge memories and S, R, FR
 /// x three prior states (cleared, running, expired) x 0 or 1 tick.
 #[test]
