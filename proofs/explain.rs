@@ -30,7 +30,7 @@ use plc_timers::s5::{S5Input, S5Kind, S5State, S5TimerOps, S5TimerRef, TimerMemo
 use plc_timers::time::clock::ClockWord;
 use plc_timers::time::{CpuTime, Time, TimeBase};
 
-use crate::cover::cover;
+use crate::cover::{check, cover};
 use crate::iec::{all_states_u4, U4};
 use crate::s5::{seen, S5Case};
 
@@ -573,6 +573,16 @@ pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
             e.outputs[0].contains(Rule::IEC_PT0_01),
             "IEC-PT0-01: decides Q in the starting call {c:?}"
         );
+    }
+    // A start that leaves the timer running decides both outputs (Q and ET take their values
+    // at the start): each names the start.
+    if started && !c.resets() && after.running {
+        for (i, rules) in e.outputs.iter().take(2).enumerate() {
+            check!(
+                rules.contains(Rule::IEC_START_01),
+                "IEC-START-01: output {i} of a starting call names the start {c:?}"
+            );
+        }
     }
     let was = (st.q, st.et);
     every_change_decided(
