@@ -17,7 +17,10 @@
 //! one plant) in turn, 100 rounds of 3 ms each, and keeps each form's fastest round: taken in
 //! turn, the forms meet the same load from other processes, so their ratios hold on a shared
 //! machine, where figures taken minutes apart do not; short turns, many of them, so that some
-//! fit between two preemptions on a loaded machine.
+//! fit between two preemptions on a loaded machine. A one-step workload is timed in four
+//! copies of its loop at four placements in the code (`PLACEMENTS`: the same machine code ran
+//! up to 30 % faster or slower by its address alone), and its figure is their mean; the
+//! summary prints each one's fastest and slowest placement beside the table.
 //!
 //! Input families (`common::Family`): every workload runs on steady square waves and on random
 //! inputs (IN flipping with probability 0.10 per step or scan; counters with random edges on
@@ -157,13 +160,18 @@ peer_int!(i16, i32, i64);
 // took. Criterion runs each one for its own report; then the summary pass runs the workloads of
 // each group in turn, round after round, and keeps each one's fastest round.
 
+/// A routine that runs `iters` iterations of a workload and returns the time they took.
+type Run<'a> = Box<dyn FnMut(u64) -> Duration + 'a>;
+
 /// One workload: a form of a block (or a copy) on a group's inputs.
 struct Workload<'a> {
     name: String,
     /// Time per iteration / `units` is the time per step (ns) or per scan (µs, with `scale`).
     units: f64,
     scale: f64,
-    run: Box<dyn FnMut(u64) -> Duration + 'a>,
+    /// The routine, once per placement of its code: one-step workloads have [`PLACEMENTS`]
+    /// copies of their timed loop (see [`step_loop`]), bulk workloads one.
+    runs: Vec<Run<'a>>,
 }
 
 impl<'a> Workload<'a> {
@@ -173,13 +181,13 @@ impl<'a> Workload<'a> {
             name: name.to_owned(),
             units: units as f64,
             scale,
-            run: Box::new(move |iters| {
+            runs: vec![Box::new(move |iters| {
                 let start = Instant::now();
                 for _ in 0..iters {
                     routine();
                 }
                 start.elapsed()
-            }),
+            })],
         }
     }
 
@@ -189,19 +197,23 @@ impl<'a> Workload<'a> {
             name: name.to_owned(),
             units: 1.0,
             scale,
-            run: Box::new(run),
+            runs: vec![Box::new(run)],
         }
     }
 
-    /// Time per unit of `iters` iterations.
-    fn per_unit(&mut self, iters: u64) -> f64 {
-        let t = (self.run)(iters);
+    /// Time per unit of `iters` iterations of placement `p`.
+    fn per_unit(&mut self, p: usize, iters: u64) -> f64 {
+        let t = (self.runs[p])(iters);
         t.as_nanos() as f64 / iters as f64 / self.units * self.scale
     }
 }
 
-/// The summary figure of each workload (`group/name`): its fastest interleaved round.
+/// The summary figure of each workload (`group/name`): its fastest interleaved round, the mean
+/// over its placements.
 static RESULTS: Mutex<BTreeMap<String, f64>> = Mutex::new(BTreeMap::new());
+
+/// The fastest and slowest placement of each one-step workload (`group/name`), for the summary.
+static SPREADS: Mutex<BTreeMap<String, (f64, f64)>> = Mutex::new(BTreeMap::new());
 
 /// Rounds of the summary pass, and the time of one workload's turn in a round.
 const ROUNDS: usize = 100;
@@ -222,27 +234,49 @@ fn run_group(c: &mut Criterion, group: &str, mut workloads: Vec<Workload<'_>>) {
     if std::env::var_os("PEERS_SUMMARY_ONLY").is_none() {
         let mut g = c.benchmark_group(group);
         for w in workloads.iter_mut() {
-            g.bench_function(w.name.as_str(), |b| b.iter_custom(|iters| (w.run)(iters)));
+            // Criterion's report: the iterations shared out over the placements.
+            g.bench_function(w.name.as_str(), |b| {
+                b.iter_custom(|iters| {
+                    let n = w.runs.len() as u64;
+                    w.runs.iter_mut().map(|run| run(iters.div_ceil(n))).sum()
+                })
+            });
         }
         g.finish();
     }
+    // Every placement of every workload, each a workload of the summary pass.
+    let slots: Vec<(usize, usize)> = (workloads.iter().enumerate())
+        .flat_map(|(i, w)| (0..w.runs.len()).map(move |p| (i, p)))
+        .collect();
     // Iterations per turn, from one probe each.
-    let iters: Vec<u64> = workloads
-        .iter_mut()
-        .map(|w| {
-            let t = (w.run)(1).max(Duration::from_nanos(1));
+    let iters: Vec<u64> = (slots.iter())
+        .map(|&(i, p)| {
+            let t = (workloads[i].runs[p])(1).max(Duration::from_nanos(1));
             (TURN.as_nanos() / t.as_nanos()).clamp(1, 1 << 20) as u64
         })
         .collect();
-    let mut best = vec![f64::INFINITY; workloads.len()];
+    let mut best = vec![f64::INFINITY; slots.len()];
     for _ in 0..ROUNDS {
-        for ((w, &n), b) in workloads.iter_mut().zip(&iters).zip(best.iter_mut()) {
-            *b = b.min(w.per_unit(n));
+        for ((&(i, p), &n), b) in slots.iter().zip(&iters).zip(best.iter_mut()) {
+            *b = b.min(workloads[i].per_unit(p, n));
         }
     }
     let mut results = RESULTS.lock().expect("no panic while holding the lock");
-    for (w, b) in workloads.iter().zip(best) {
-        results.insert(format!("{group}/{}", w.name), b);
+    let mut spreads = SPREADS.lock().expect("no panic while holding the lock");
+    for (i, w) in workloads.iter().enumerate() {
+        let bests: Vec<f64> = (slots.iter().zip(&best))
+            .filter(|((j, _), _)| *j == i)
+            .map(|(_, &b)| b)
+            .collect();
+        let key = format!("{group}/{}", w.name);
+        let mean = bests.iter().sum::<f64>() / bests.len() as f64;
+        let (lo, hi) = bests.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &b| {
+            (lo.min(b), hi.max(b))
+        });
+        if bests.len() > 1 {
+            spreads.insert(key.clone(), (lo, hi));
+        }
+        results.insert(key, mean);
     }
 }
 
@@ -343,29 +377,97 @@ impl Stream {
     }
 
     /// The workload `name`: `step(instance, bits, now)` over the stream for `INSTANCES`
-    /// instances made by `new`, each output passed to `black_box`.
+    /// instances made by `new`, each output passed to `black_box`; in [`PLACEMENTS`] copies of
+    /// the timed loop, each with instances of its own.
     fn workload<'a, T: 'a, O>(
         &'a self,
         name: &str,
         new: impl Fn() -> T,
-        mut step: impl FnMut(&mut T, u8, u64) -> O + 'a,
+        step: impl FnMut(&mut T, u8, u64) -> O + Clone + 'a,
     ) -> Workload<'a> {
+        let runs: [Run<'a>; PLACEMENTS] = [
+            self.placed::<0, T, O>(&new, step.clone()),
+            self.placed::<1, T, O>(&new, step.clone()),
+            self.placed::<2, T, O>(&new, step.clone()),
+            self.placed::<3, T, O>(&new, step),
+        ];
+        Workload {
+            name: name.to_owned(),
+            units: (STEPS * INSTANCES) as f64,
+            scale: 1.0,
+            runs: runs.into(),
+        }
+    }
+
+    /// The routine of placement `P`: iterations of [`step_loop`]`::<P>`.
+    fn placed<'a, const P: usize, T: 'a, O>(
+        &'a self,
+        new: &impl Fn() -> T,
+        mut step: impl FnMut(&mut T, u8, u64) -> O + 'a,
+    ) -> Run<'a> {
         let mut instances: [Instance<T>; INSTANCES] = core::array::from_fn(|_| Instance(new()));
         let mut base = 0;
-        Workload::plain(name, STEPS * INSTANCES, 1.0, move || {
-            for (bits, &t) in self.bits.iter().zip(&self.times) {
-                let now = base + t;
-                // The instances go to `black_box` once per step: the compiler must then take
-                // their memory as read and written outside, so every call reads and writes its
-                // instance in memory, as a PLC does with its instance data (without it, the
-                // compiler kept some forms' state in registers across steps and not others').
-                black_box(&mut instances);
-                for (instance, &bits) in instances.iter_mut().zip(bits) {
-                    black_box(step(&mut instance.0, bits, now));
-                }
+        Box::new(move |iters| {
+            let start = Instant::now();
+            for _ in 0..iters {
+                step_loop::<P, T, O>(self, &mut instances, base, &mut step);
+                base += self.span;
             }
-            base += self.span;
+            start.elapsed()
         })
+    }
+}
+
+/// Copies of each one-step workload's timed loop. The same machine code of a single step ran
+/// up to 30 % faster or slower from one build to the next, by where the linker put it (TONR's
+/// optimized step: 0.99 and 1.31 ns on square waves in two builds whose loops differ only in
+/// their addresses, by 32 bytes within a cache line among others; the reference's TP 1.16 and
+/// 1.36). A figure of one placement is then a draw, and a ratio of two such figures says as
+/// much about the two addresses as about the two forms. Each one-step workload is therefore
+/// timed in four copies of its loop, the `k`-th moved `k` × 16 bytes further into its function
+/// (x86-64: the loops are aligned to 16 bytes, so the four copies put the loop at each
+/// 16-byte offset of a 64-byte line, whatever the function's own address), and its figure
+/// is the mean of the four.
+const PLACEMENTS: usize = 4;
+
+/// One iteration of a one-step workload: every step of the stream, each instance called in
+/// turn. A function of its own per placement `P` (never inlined, so that each copy has its own
+/// address; the padding of [`shift_code`] makes the copies differ, so that none is merged
+/// with another).
+#[inline(never)]
+fn step_loop<const P: usize, T, O>(
+    stream: &Stream,
+    instances: &mut [Instance<T>; INSTANCES],
+    base: u64,
+    step: &mut impl FnMut(&mut T, u8, u64) -> O,
+) {
+    shift_code::<P>();
+    for (bits, &t) in stream.bits.iter().zip(&stream.times) {
+        let now = base + t;
+        // The instances go to `black_box` once per step: the compiler must then take their
+        // memory as read and written outside, so every call reads and writes its instance in
+        // memory, as a PLC does with its instance data (without it, the compiler kept some
+        // forms' state in registers across steps and not others').
+        black_box(&mut *instances);
+        for (instance, &bits) in instances.iter_mut().zip(bits) {
+            black_box(step(&mut instance.0, bits, now));
+        }
+    }
+}
+
+/// `P` × 16 bytes of one-byte `nop`s before the loop that follows, run once per iteration
+/// (8 192 steps): they move the loop `P` × 16 bytes further into its function.
+#[inline(always)]
+fn shift_code<const P: usize>() {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: the block is `P * 16` one-byte `nop` instructions (0x90), which read and write no
+    // register, no memory and no flag, as the options declare.
+    unsafe {
+        core::arch::asm!(
+            ".fill {n}, 1, 0x90",
+            n = const P * 16,
+            options(nomem, nostack, preserves_flags)
+        );
     }
 }
 
@@ -1025,7 +1127,7 @@ fn summary(family: Family, tally: &mut Tally) {
         .chain(S5Kind::ALL.iter().map(|k| k.name()))
         .chain(S5CounterKind::ALL.iter().map(|k| k.name()))
         .collect();
-    for block in blocks {
+    for block in &blocks {
         let get = |name: &str| result(&format!("step {block}/{name}"));
         let (r, o, ru, ma) = (
             get("reference"),
@@ -1051,6 +1153,26 @@ fn summary(family: Family, tally: &mut Tally) {
             verdict(ok),
         );
     }
+    println!();
+    println!(
+        "Each figure above is the mean of the loop's {PLACEMENTS} placements (`PLACEMENTS`); \
+         the fastest and the slowest placement, ns:"
+    );
+    println!();
+    let spreads = SPREADS.lock().expect("no panic while holding the lock");
+    for block in &blocks {
+        let forms: Vec<String> = ["reference", "optimized", "RuSTy", "matiec"]
+            .iter()
+            .filter_map(|name| {
+                let (lo, hi) = spreads.get(&format!("{fam}: step {block}/{name}"))?;
+                Some(format!("{name} {lo:.2}-{hi:.2}"))
+            })
+            .collect();
+        if !forms.is_empty() {
+            println!("- {block}: {}", forms.join(", "));
+        }
+    }
+    drop(spreads);
     println!();
     for (block, form) in [
         ("TON", "ton_for_arrays"),
