@@ -669,8 +669,8 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                 // with IN = 0. One branch, on the rise (tested on the flag words, so that it
                 // stays one test); IN itself only selects ET: as a branch, a falling IN on a
                 // stopped timer cost a misprediction the rise test does not (random inputs,
-                // `benches/peers`: 1.55-1.69 → 1.23-1.25 ns in four builds; square waves 1.11
-                // → 1.18 ns).
+                // `benches/peers`: 1.55-1.69 → 1.23-1.25 ns in three builds; square waves
+                // 1.11-1.12 → 1.18 ns).
                 if flags & !f & flag::IN == 0 {
                     let q = f & flag::Q;
                     let et = core::hint::select_unpredictable(on, self.et, C::ZERO);
