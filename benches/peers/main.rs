@@ -234,11 +234,13 @@ fn run_group(c: &mut Criterion, group: &str, mut workloads: Vec<Workload<'_>>) {
     if std::env::var_os("PEERS_SUMMARY_ONLY").is_none() {
         let mut g = c.benchmark_group(group);
         for w in workloads.iter_mut() {
-            // Criterion's report: the iterations shared out over the placements.
+            // Criterion's report: the iterations shared out over the placements, `iters` in all.
             g.bench_function(w.name.as_str(), |b| {
                 b.iter_custom(|iters| {
                     let n = w.runs.len() as u64;
-                    w.runs.iter_mut().map(|run| run(iters.div_ceil(n))).sum()
+                    (w.runs.iter_mut().zip(0..))
+                        .map(|(run, p)| run(iters / n + u64::from(p < iters % n)))
+                        .sum()
                 })
             });
         }
