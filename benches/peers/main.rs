@@ -19,7 +19,7 @@
 //! machine, where figures taken minutes apart do not; short turns, many of them, so that some
 //! fit between two preemptions on a loaded machine. A one-step workload is timed in four
 //! copies of its loop at four placements in the code (`PLACEMENTS`: the same machine code ran
-//! up to 30 % faster or slower by its address alone), and its figure is their mean; the
+//! 0.98-1.43 ns for one TONR step by its address alone), and its figure is their mean; the
 //! summary prints each one's fastest and slowest placement beside the table.
 //!
 //! Input families (`common::Family`): every workload runs on steady square waves and on random
