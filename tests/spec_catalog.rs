@@ -27,31 +27,13 @@ struct Requirement {
     tests: Vec<String>,
 }
 
-const FAMILIES: [(&str, &str); 5] = [
-    ("time", "Time formats (S5TIME, TIME)"),
-    ("s5", "S5 timers"),
-    ("iec", "IEC timers"),
-    ("counter", "Counters"),
-    ("cli", "Command line"),
-];
+#[path = "support/requirement_files.rs"]
+mod requirement_files;
+use requirement_files::FAMILIES;
 
-/// Every `spec/requirements/*.toml`: the known families in [`FAMILIES`] order (a family whose file
-/// does not exist yet is skipped), then any other file by name, titled by its stem.
+/// Every `spec/requirements/*.toml` (`requirement_files::stems`), with its title and contents.
 fn load_all() -> Vec<(String, String, Catalog)> {
-    let mut stems: Vec<String> = fs::read_dir("spec/requirements")
-        .expect("spec/requirements")
-        .filter_map(|e| {
-            let path = e.ok()?.path();
-            (path.extension()? == "toml").then(|| path.file_stem()?.to_str().map(String::from))?
-        })
-        .collect();
-    let rank = |s: &str| {
-        FAMILIES
-            .iter()
-            .position(|(f, _)| *f == s)
-            .unwrap_or(FAMILIES.len())
-    };
-    stems.sort_by(|a, b| rank(a).cmp(&rank(b)).then(a.cmp(b)));
+    let stems = requirement_files::stems();
     stems
         .into_iter()
         .map(|stem| {
