@@ -2,7 +2,7 @@
 //! S5TIME and TIME.
 
 use crate::cover::{check, check_eq};
-use plc_timers::time::{bcd3_decode, bcd3_encode, LiteralErrorKind, S5Time, Time, TimeBase};
+use plc_timers::time::{bcd3_decode, bcd3_encode, LTime, LiteralErrorKind, S5Time, Time, TimeBase};
 use proptest::prelude::*;
 
 /// S5T-WORD-01, S5T-BCD-01: a raw word decodes exactly when its three value digits are BCD
@@ -76,9 +76,16 @@ pub fn expected_components(millis: u64, days: bool, sep: &str) -> String {
         (1_000, "S"),
         (1, "MS"),
     ];
+    spelled(millis, &UNITS[usize::from(!days)..], sep)
+}
+
+/// `value` spelled in `units` (size in the value's unit, symbol; largest first): each non-zero
+/// component as a decimal number and its symbol, `sep` between two, `0` and the smallest unit
+/// for zero.
+fn spelled(value: u64, units: &[(u64, &str)], sep: &str) -> String {
     let mut parts = Vec::new();
-    let mut rest = millis;
-    for (size, unit) in UNITS.iter().skip(usize::from(!days)) {
+    let mut rest = value;
+    for (size, unit) in units {
         let n = rest / size;
         rest -= n * size;
         if n != 0 {
@@ -86,10 +93,22 @@ pub fn expected_components(millis: u64, days: bool, sep: &str) -> String {
         }
     }
     if parts.is_empty() {
-        parts.push(String::from("0MS"));
+        let smallest = units.last().map_or("", |(_, u)| u);
+        parts.push(format!("0{smallest}"));
     }
     parts.join(sep)
 }
+
+/// The LTIME units with their length in nanoseconds, written from LTIME-LIT-01's text.
+const LTIME_UNITS: [(u64, &str); 7] = [
+    (86_400 * 1_000_000_000, "D"),
+    (3_600 * 1_000_000_000, "H"),
+    (60 * 1_000_000_000, "M"),
+    (1_000_000_000, "S"),
+    (1_000_000, "MS"),
+    (1_000, "US"),
+    (1, "NS"),
+];
 
 /// S5T-LIT-01: `Display` gives `S5T#` and the duration without underscores ([`expected_components`]);
 /// parsing it gives the same duration, and the automatic encoding of it.
@@ -221,6 +240,9 @@ pub fn prop_s5_parse_total(text: &str) {
     }
     if let Err(e) = text.parse::<Time>() {
         check!(e.position <= text.len(), "TIME-LIT-01: {text}: {e:?}");
+    }
+    if let Err(e) = text.parse::<LTime>() {
+        check!(e.position <= text.len(), "LTIME-LIT-01: {text}: {e:?}");
     }
 }
 
@@ -651,7 +673,7 @@ fn kani_time_arith() {
 }
 
 /// The literal alphabet: every byte the parsers treat specially, plus one of each other class.
-const LITERAL_BYTES: &[u8] = b"sStT5#wWcC16_09hHmMdD.,+- eAxI\xC3";
+const LITERAL_BYTES: &[u8] = b"sStT5#wWcC16_09hHmMdD.,+- eAxI\xC3lLuUnN";
 
 /// S5T-LIT-02 (and the counter preset parser's totality, SC-BCD-01): no panic on any text of
 /// up to 16 bytes, an accepted S5TIME within range, an error position inside the text. The
@@ -752,4 +774,187 @@ fn components_total(s: &str) -> Option<u64> {
         rest = &rest[u.len()..];
     }
     (!first).then_some(total)
+}
+
+/// LTIME-LIT-01: `Display` gives `LT#`, a minus for a negative value, and the components from
+/// days down to nanoseconds separated by `_` (spelled here from the rule's units, `0NS` for
+/// zero); parsing it, and the plain number of nanoseconds, give the same LTIME.
+pub fn prop_ltime_literal_round_trip(ns: i64) {
+    let t = LTime::from_nanos(ns);
+    let text = t.to_string();
+    let sign = if ns < 0 { "-" } else { "" };
+    check_eq!(
+        text,
+        format!("LT#{sign}{}", spelled(ns.unsigned_abs(), &LTIME_UNITS, "_")),
+        "LTIME-LIT-01: Display of {ns} ns: LT#, sign, components from D down to NS joined by _"
+    );
+    check_eq!(text.parse::<LTime>(), Ok(t), "LTIME-LIT-01: {text}");
+    check_eq!(
+        ns.to_string().parse::<LTime>(),
+        Ok(t),
+        "LTIME-LIT-01: plain nanoseconds"
+    );
+}
+
+/// LTIME-LIT-01 from the components: `LT#` (or `ltime#`) with each of D, H, M, S, MS, US, NS
+/// present or not, the first present one any `u32` and the later ones below their unit's limit
+/// (24, 60, 60, 1 000, 1 000, 1 000), `_` between them or not, is its exact total computed here
+/// in 128 bits: accepted when the total fits LTIME, `OutOfRange` when it does not but fits 64
+/// unsigned bits, `Overflow` beyond.
+pub fn prop_ltime_literal_components(parts: [Option<u32>; 7], underscores: bool, lower: bool) {
+    const LIMITS: [u32; 7] = [u32::MAX, 24, 60, 60, 1_000, 1_000, 1_000];
+    let mut text = String::from(if lower { "ltime#" } else { "LT#" });
+    let mut total: i128 = 0;
+    let mut first = true;
+    for (i, part) in parts.iter().enumerate() {
+        let Some(v) = *part else { continue };
+        let v = if first { v } else { v % LIMITS[i] };
+        if !first && underscores {
+            text.push('_');
+        }
+        let unit = LTIME_UNITS[i].1;
+        text.push_str(&format!("{v}"));
+        text.push_str(&if lower {
+            unit.to_lowercase()
+        } else {
+            unit.to_owned()
+        });
+        total += i128::from(v) * i128::from(LTIME_UNITS[i].0);
+        first = false;
+    }
+    let parsed = text.parse::<LTime>();
+    if first {
+        check_eq!(
+            parsed.map_err(|e| e.kind),
+            Err(LiteralErrorKind::NoComponents),
+            "LTIME-LIT-01: {text} has no value"
+        );
+    } else if total <= i128::from(i64::MAX) {
+        check_eq!(
+            parsed.map(LTime::as_nanos).map(i128::from),
+            Ok(total),
+            "LTIME-LIT-01: {text} is the sum of its components"
+        );
+    } else {
+        let kind = if total <= i128::from(u64::MAX) {
+            LiteralErrorKind::OutOfRange
+        } else {
+            LiteralErrorKind::Overflow
+        };
+        check_eq!(
+            parsed.map_err(|e| e.kind),
+            Err(kind),
+            "LTIME-RANGE-01: {text} totals {total} ns"
+        );
+    }
+}
+
+/// LTIME-RANGE-01: LTIME is a signed 64-bit count of nanoseconds: a value exists
+/// (`from_nanos_i128`) exactly when it fits 64 bits, and `LT#{ns}NS` parses to it exactly then,
+/// else it is `OutOfRange` (below 2^64 in magnitude) or `Overflow`.
+pub fn prop_ltime_range(ns: i128) {
+    let inside = (i128::from(i64::MIN)..=i128::from(i64::MAX)).contains(&ns);
+    check_eq!(
+        LTime::from_nanos_i128(ns).map(|t| i128::from(t.as_nanos())),
+        inside.then_some(ns),
+        "LTIME-RANGE-01: {ns} ns is an LTIME exactly when it fits 64 bits"
+    );
+    let text = if ns < 0 {
+        format!("LT#-{}NS", ns.unsigned_abs())
+    } else {
+        format!("LT#{ns}NS")
+    };
+    match text.parse::<LTime>() {
+        Ok(t) => check!(
+            inside && i128::from(t.as_nanos()) == ns,
+            "LTIME-RANGE-01: {text} parses to itself"
+        ),
+        Err(e) => check!(
+            !inside
+                && e.kind
+                    == if ns.unsigned_abs() <= u128::from(u64::MAX) {
+                        LiteralErrorKind::OutOfRange
+                    } else {
+                        LiteralErrorKind::Overflow
+                    },
+            "LTIME-RANGE-01: {text}: {e:?}"
+        ),
+    }
+}
+
+/// LTIME-RANGE-01 at the ends, spelled as the PLCopen data type description does, one past
+/// each end, and the values around both ends and 2^64.
+#[test]
+fn ltime_range_ends() {
+    crate::cover::check_ids(&["LTIME-RANGE-01"], || {
+        check_eq!(
+            "LT#-106751D_23H_47M_16S_854MS_775US_808NS".parse::<LTime>(),
+            Ok(LTime::MIN),
+            "LTIME-RANGE-01: the lower end"
+        );
+        check_eq!(
+            "LT#106751D_23H_47M_16S_854MS_775US_807NS".parse::<LTime>(),
+            Ok(LTime::MAX),
+            "LTIME-RANGE-01: the upper end"
+        );
+        for past in [
+            "LT#-106751D_23H_47M_16S_854MS_775US_809NS",
+            "LT#106751D_23H_47M_16S_854MS_775US_808NS",
+            "LT#106752D",
+        ] {
+            check_eq!(
+                past.parse::<LTime>().map_err(|e| e.kind),
+                Err(LiteralErrorKind::OutOfRange),
+                "LTIME-RANGE-01: {past} is past an end"
+            );
+        }
+        let ends = [i128::from(i64::MIN), i128::from(i64::MAX), 1 << 64];
+        for end in ends {
+            for d in -3..=3 {
+                prop_ltime_range(end + d);
+                prop_ltime_range(-(end + d));
+            }
+        }
+        for ns in [0, 1, -1, 1_000_000_000] {
+            prop_ltime_range(ns);
+        }
+    });
+}
+
+/// LTIME round-trips at the range ends, at every unit boundary (one below, at, one above, on
+/// both sides of 0), and over the first 2 million ns on both sides of 0.
+#[test]
+fn exhaustive_ltime_round_trip_near_zero_and_ends() {
+    crate::cover::check_ids(&["LTIME-LIT-01"], || {
+        (-2_000_000..=2_000_000).for_each(prop_ltime_literal_round_trip);
+        for ns in [i64::MIN, i64::MIN + 1, i64::MAX - 1, i64::MAX] {
+            prop_ltime_literal_round_trip(ns);
+        }
+        for (size, _) in LTIME_UNITS {
+            let size = i64::try_from(size).expect("a unit fits LTIME");
+            for ns in [size - 1, size, size + 1] {
+                prop_ltime_literal_round_trip(ns);
+                prop_ltime_literal_round_trip(-ns);
+            }
+        }
+    });
+}
+
+/// LTIME-LIT-01 and LTIME-RANGE-01 on random values and component lists (bolero; random under
+/// `cargo test`). Not a Kani harness: the formatting machinery of `Display` is beyond a useful
+/// CBMC bound; the parser's totality over any bytes is `kani_parse_12_bytes`.
+#[test]
+fn random_ltime_literals() {
+    crate::cover::check_ids(&["LTIME-LIT-01", "LTIME-RANGE-01"], || {
+        bolero::check!()
+            .with_type::<(i64, [Option<u32>; 7], bool, bool, i128)>()
+            .with_iterations(20_000)
+            .for_each(|(ns, parts, underscores, lower, wide)| {
+                prop_ltime_literal_round_trip(*ns);
+                prop_ltime_literal_components(*parts, *underscores, *lower);
+                // Half of the wide values near the 64-bit range, where the ends are.
+                let wide = if wide & 1 == 0 { *wide >> 62 } else { *wide };
+                prop_ltime_range(wide);
+            });
+    });
 }

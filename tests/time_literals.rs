@@ -1,6 +1,6 @@
-//! Literal parsing and formatting of S5TIME and TIME, against the manuals' examples.
+//! Literal parsing and formatting of S5TIME, TIME and LTIME, against the manuals' examples.
 
-use plc_timers::time::{LiteralErrorKind, S5Time, Time, TimeBase};
+use plc_timers::time::{LTime, LiteralErrorKind, S5Time, Time, TimeBase, Unit};
 
 fn s5(text: &str) -> S5Time {
     match text.parse() {
@@ -430,4 +430,84 @@ fn literals_as_constants() {
     const PT: Time = plc_timers::time!("T#-5S");
     assert_eq!((TV.to_word(), PT.as_millis()), (0x2127, -5_000));
     assert_eq!(Ok(TV), S5Time::parse("W#16#2127"));
+}
+
+fn ltime(text: &str) -> i64 {
+    match text.parse::<LTime>() {
+        Ok(t) => t.as_nanos(),
+        Err(e) => panic!("{text}: {e}"),
+    }
+}
+
+/// LTIME-LIT-01, LTIME-RANGE-01: the forms and the range ends of the PLCopen description of
+/// LTIME (OPC UA for IEC 61131-3, DataType LTIME), written as this crate writes them (no `+`).
+#[test]
+fn ltime_literal_forms() {
+    assert_eq!(ltime("LT#-106751d23h47m16s854ms775us808ns"), i64::MIN);
+    assert_eq!(ltime("LT#106751d23h47m16s854ms775us807ns"), i64::MAX);
+    assert_eq!(ltime("LT#1ms500us"), 1_500_000);
+    assert_eq!(ltime("LTIME#1MS_500US"), 1_500_000);
+    assert_eq!(ltime("lt#2s_200ms"), 2_200_000_000);
+    assert_eq!(ltime("LT#-5NS"), -5);
+    assert_eq!(ltime("LT#90M"), 5_400_000_000_000);
+    assert_eq!(ltime("LT#30D"), 30 * 86_400 * 1_000_000_000);
+    assert_eq!(ltime("1500"), 1_500);
+    assert_eq!(ltime("-9223372036854775808"), i64::MIN);
+    assert_eq!(LTime::from_nanos(1_500_000).to_string(), "LT#1MS_500US");
+    assert_eq!(LTime::ZERO.to_string(), "LT#0NS");
+    assert_eq!(
+        LTime::MIN.to_string(),
+        "LT#-106751D_23H_47M_16S_854MS_775US_808NS"
+    );
+    // A TIME converts exactly: T#2S_200MS is 2.2e9 ns.
+    assert_eq!(
+        LTime::from(Time::from_millis(2_200)).as_nanos(),
+        2_200_000_000
+    );
+    assert_eq!(LTime::from(Time::MIN).as_nanos(), -2_147_483_648_000_000);
+    const PT: LTime = plc_timers::ltime!("LT#1MS500US");
+    assert_eq!(PT.as_nanos(), 1_500_000);
+}
+
+/// Every LTIME literal error is a typed error at the faulty token, with a message that says
+/// what is allowed.
+#[test]
+fn ltime_malformed() {
+    use LiteralErrorKind::*;
+    let cases: &[(&str, LiteralErrorKind, usize)] = &[
+        ("", Empty, 0),
+        ("LT#", NoComponents, 3),
+        ("LT#5Y", UnknownUnit, 4),
+        ("LT#5US_1MS", UnitOrder(Unit::Milli), 8),
+        ("LT#1MS_1000US", ComponentRange(Unit::Micro, 1_000), 7),
+        ("LT#1US_1000NS", ComponentRange(Unit::Nano, 1_000), 7),
+        ("LT#1.5US", Fraction, 4),
+        ("LT#5", MissingUnit, 4),
+        ("LT#+5S", UnexpectedChar('+'), 3),
+        ("T#5S", Prefix, 0),
+        ("LT#106752D", OutOfRange, 3),
+        ("LT#-106751D_23H_47M_16S_854MS_775US_809NS", OutOfRange, 3),
+        ("9223372036854775808", OutOfRange, 0),
+        ("LT#99999999999999999999NS", Overflow, 3),
+    ];
+    for &(text, kind, position) in cases {
+        let e = text.parse::<LTime>().expect_err(text);
+        assert_eq!((e.kind, e.position), (kind, position), "{text}");
+    }
+    // US and NS are units of LTIME, not of TIME.
+    assert_eq!(time_err("T#5US"), UnknownUnit);
+    assert_eq!(time_err("T#5NS"), UnknownUnit);
+    let message = "LT#5Q".parse::<LTime>().expect_err("unit").to_string();
+    assert_eq!(
+        message,
+        "invalid LTIME literal at byte 4: unknown unit; units are D, H, M, S, MS, US, NS"
+    );
+    let message = "LT#106752D"
+        .parse::<LTime>()
+        .expect_err("range")
+        .to_string();
+    assert!(
+        message.contains("LT#-106751D_23H_47M_16S_854MS_775US_808NS ..= LT#106751D_23H_47M_16S_854MS_775US_807NS"),
+        "{message}"
+    );
 }

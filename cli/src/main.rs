@@ -10,7 +10,7 @@ use std::process::ExitCode;
 use clap::error::ErrorKind;
 use clap::{Arg, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueEnum};
 use plc_timers::catalog::Block;
-use plc_timers::time::{S5Time, Time};
+use plc_timers::time::{LTime, S5Time, Time};
 use plc_timers_cli::trace::diagram::{self, Window};
 use plc_timers_cli::trace::family::block_names;
 use plc_timers_cli::trace::{
@@ -88,9 +88,10 @@ enum Command {
         #[arg(allow_hyphen_values = true)]
         value: String,
     },
-    /// Convert a TIME literal: prints `<ms> <T# literal>`.
+    /// Convert a TIME literal: prints `<ms> <T# literal>`; an LTIME literal (`LT#…`):
+    /// `<ns> <LT# literal>`.
     Time {
-        /// `T#…`, `TIME#…` or whole milliseconds (may be negative).
+        /// `T#…`, `TIME#…` or whole milliseconds (may be negative); `LT#…` or `LTIME#…`.
         #[arg(allow_hyphen_values = true)]
         value: String,
     },
@@ -312,10 +313,17 @@ fn s5time(value: &str) -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `time`: the value's milliseconds and its literal.
+/// `time`: the value's milliseconds and its literal; for an LTIME literal (`LT#`, `LTIME#`)
+/// its nanoseconds and its literal.
 fn time(value: &str) -> Result<ExitCode, Error> {
-    let t = value.parse::<Time>().map_err(bad_value)?;
-    say(&format!("{} {t}\n", t.as_millis()))?;
+    let upper = value.to_ascii_uppercase();
+    if upper.starts_with("LT#") || upper.starts_with("LTIME#") {
+        let t = value.parse::<LTime>().map_err(bad_value)?;
+        say(&format!("{} {t}\n", t.as_nanos()))?;
+    } else {
+        let t = value.parse::<Time>().map_err(bad_value)?;
+        say(&format!("{} {t}\n", t.as_millis()))?;
+    }
     Ok(ExitCode::SUCCESS)
 }
 

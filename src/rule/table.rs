@@ -33,6 +33,10 @@ pub enum Rule {
     S5T_LIT_02,
     /// TIME-ARITH-01 (`spec/requirements/time.toml`): TIME arithmetic never wraps: checked add, sub and negation give None exactly when the exact result leaves T#-24d\_20h\_31m\_23s\_648ms .. T#24d\_20h\_31m\_23s\_647ms; saturating add and sub clamp to the ends.
     TIME_ARITH_01,
+    /// LTIME-RANGE-01 (`spec/requirements/time.toml`): LTIME (S7-1500) is a signed 64-bit count of nanoseconds, LT#-106751d\_23h\_47m\_16s\_854ms\_775us\_808ns .. LT#106751d\_23h\_47m\_16s\_854ms\_775us\_807ns; one past either end is an error.
+    LTIME_RANGE_01,
+    /// LTIME-LIT-01 (`spec/requirements/time.toml`): LTIME literals: LT#… or LTIME#… with units D, H, M, S, MS, US, NS (case-insensitive, optional underscores, optional minus after #, largest unit first, each once, later ones within their unit's range), or a plain number of nanoseconds; Display gives LT#1MS\_500US (LT#0NS for zero); parsing it gives the same value.
+    LTIME_LIT_01,
     /// S5TMR-TICK-01 (`spec/requirements/s5.toml`): The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t\_prev, t\] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.
     S5TMR_TICK_01,
     /// S5TMR-EXPIRE-01 (`spec/requirements/s5.toml`): When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S\_PULSE, S\_PEXT and S\_OFFDT, 1 for S\_ODT and S\_ODTS.
@@ -177,10 +181,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 79;
+    pub const COUNT: usize = 81;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 79] = [
+    pub const ALL: [Rule; 81] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -190,6 +194,8 @@ impl Rule {
         Rule::TIME_LIT_01,
         Rule::S5T_LIT_02,
         Rule::TIME_ARITH_01,
+        Rule::LTIME_RANGE_01,
+        Rule::LTIME_LIT_01,
         Rule::S5TMR_TICK_01,
         Rule::S5TMR_EXPIRE_01,
         Rule::S5TMR_ZERO_01,
@@ -274,6 +280,8 @@ impl Rule {
             Rule::TIME_LIT_01 => "TIME-LIT-01",
             Rule::S5T_LIT_02 => "S5T-LIT-02",
             Rule::TIME_ARITH_01 => "TIME-ARITH-01",
+            Rule::LTIME_RANGE_01 => "LTIME-RANGE-01",
+            Rule::LTIME_LIT_01 => "LTIME-LIT-01",
             Rule::S5TMR_TICK_01 => "S5TMR-TICK-01",
             Rule::S5TMR_EXPIRE_01 => "S5TMR-EXPIRE-01",
             Rule::S5TMR_ZERO_01 => "S5TMR-ZERO-01",
@@ -359,6 +367,8 @@ impl Rule {
             Rule::TIME_LIT_01 => "TIME literals: T#… or TIME#… with units D, H, M, S, MS (case-insensitive, optional underscores, optional minus after #), or a plain number of milliseconds (T#200ms or 200); Display gives T#2S_200MS; parsing it gives the same value.",
             Rule::S5T_LIT_02 => "The literal parsers are total: any text gives a value or a typed error whose byte offset lies inside the text and points at the faulty token (the start of the value for a total out of range), never a panic; an accepted S5TIME holds the invariant units <= 999 and at most 9 990 000 ms.",
             Rule::TIME_ARITH_01 => "TIME arithmetic never wraps: checked add, sub and negation give None exactly when the exact result leaves T#-24d_20h_31m_23s_648ms .. T#24d_20h_31m_23s_647ms; saturating add and sub clamp to the ends.",
+            Rule::LTIME_RANGE_01 => "LTIME (S7-1500) is a signed 64-bit count of nanoseconds, LT#-106751d_23h_47m_16s_854ms_775us_808ns .. LT#106751d_23h_47m_16s_854ms_775us_807ns; one past either end is an error.",
+            Rule::LTIME_LIT_01 => "LTIME literals: LT#… or LTIME#… with units D, H, M, S, MS, US, NS (case-insensitive, optional underscores, optional minus after #, largest unit first, each once, later ones within their unit's range), or a plain number of nanoseconds; Display gives LT#1MS_500US (LT#0NS for zero); parsing it gives the same value.",
             Rule::S5TMR_TICK_01 => "The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t_prev, t] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.",
             Rule::S5TMR_EXPIRE_01 => "When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S_PULSE, S_PEXT and S_OFFDT, 1 for S_ODT and S_ODTS.",
             Rule::S5TMR_ZERO_01 => "A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.",

@@ -1,6 +1,6 @@
 //! IEC `TIME`: a signed 32-bit count of milliseconds (S7-1200 manual, Table 8-21).
 
-use super::literal::{char_at, has_prefix_ci, parse_components, write_components};
+use super::literal::{parse_signed, write_components};
 use super::literal::{LiteralError, LiteralErrorKind, LiteralType};
 use super::S5Time;
 
@@ -139,32 +139,11 @@ impl Time {
     /// # Ok::<(), plc_timers::time::LiteralError>(())
     /// ```
     pub const fn parse(text: &str) -> Result<Time, LiteralError> {
-        let b = text.as_bytes();
-        if b.is_empty() {
-            return fail(0, LiteralErrorKind::Empty);
-        }
-        let prefix = if has_prefix_ci(b, 0, "TIME#") {
-            5
-        } else if has_prefix_ci(b, 0, "T#") {
-            2
-        } else {
-            0
-        };
-        // `value_start`: where the value (with its sign) begins, which a range error points at.
-        let value_start = prefix;
-        let negative = value_start < b.len() && b[value_start] == b'-';
-        let magnitude = if prefix > 0 {
-            let digits = value_start + negative as usize;
-            match parse_components(LiteralType::Time, b, digits, true) {
-                Ok(m) => m,
+        let (negative, magnitude, value_start) =
+            match parse_signed(LiteralType::Time, text.as_bytes()) {
+                Ok(parts) => parts,
                 Err(e) => return Err(e),
-            }
-        } else {
-            match parse_plain_millis(b) {
-                Ok(m) => m,
-                Err(e) => return Err(e),
-            }
-        };
+            };
         // Any magnitude above 2^31 is out of range; capping keeps the sign change exact.
         let capped = if magnitude > 1 << 40 {
             1 << 40
@@ -174,43 +153,13 @@ impl Time {
         let signed = if negative { -capped } else { capped };
         match Time::from_millis_i64(signed) {
             Some(t) => Ok(t),
-            None => fail(value_start, LiteralErrorKind::OutOfRange),
+            None => Err(LiteralError::new(
+                LiteralType::Time,
+                value_start,
+                LiteralErrorKind::OutOfRange,
+            )),
         }
     }
-}
-
-const fn fail<T>(position: usize, kind: LiteralErrorKind) -> Result<T, LiteralError> {
-    Err(LiteralError::new(LiteralType::Time, position, kind))
-}
-
-/// The magnitude of a plain whole number of milliseconds with an optional sign (`-5`, `+5`, `5`).
-const fn parse_plain_millis(b: &[u8]) -> Result<u64, LiteralError> {
-    let offset = if b[0] == b'-' || b[0] == b'+' { 1 } else { 0 };
-    if offset == b.len() {
-        return fail(offset, LiteralErrorKind::MissingDigits);
-    }
-    let mut value: u64 = 0;
-    let mut i = offset;
-    while i < b.len() {
-        if !b[i].is_ascii_digit() {
-            // A letter first means a missing or unknown prefix (`X#5S`, `5S` without `T#`).
-            let kind = if b[i].is_ascii_alphabetic() && i == offset {
-                LiteralErrorKind::Prefix
-            } else {
-                LiteralErrorKind::UnexpectedChar(char_at(b, i))
-            };
-            return fail(i, kind);
-        }
-        value = match value.checked_mul(10) {
-            Some(v) => match v.checked_add((b[i] - b'0') as u64) {
-                Some(v) => v,
-                None => return fail(offset, LiteralErrorKind::Overflow),
-            },
-            None => return fail(offset, LiteralErrorKind::Overflow),
-        };
-        i += 1;
-    }
-    Ok(value)
 }
 
 impl core::str::FromStr for Time {
@@ -227,6 +176,6 @@ impl core::fmt::Display for Time {
     /// `T#2S_200MS`, `T#0MS`, `T#-24D_20H_31M_23S_648MS`.
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(if self.0 < 0 { "T#-" } else { "T#" })?;
-        write_components(f, u64::from(self.0.unsigned_abs()), true, "_")
+        write_components(f, u64::from(self.0.unsigned_abs()), LiteralType::Time, "_")
     }
 }

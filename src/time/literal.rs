@@ -1,8 +1,10 @@
-//! The lexer shared by the duration literals `S5T#…` and `T#…`: a sequence of
-//! `<digits><unit>` components, optionally separated by `_`, units case-insensitive.
+//! The lexer shared by the duration literals `S5T#…`, `T#…` and `LT#…`: a sequence of
+//! `<digits><unit>` components, optionally separated by `_`, units case-insensitive. Each
+//! literal type has its set of units and its base unit (ms for S5TIME and TIME, ns for LTIME):
+//! one lexer serves the three, and the value comes out as a count of the type's base unit.
 //!
 //! Everything here is a `const fn`, so that a literal can be checked at compile time
-//! ([`crate::s5time!`], [`crate::time!`]). That rules out iterators, closures and `?`; the
+//! ([`crate::s5time!`], [`crate::time!`], [`crate::ltime!`]). That rules out iterators, closures and `?`; the
 //! loops below walk byte indices of the whole literal, so every error position is a byte offset
 //! of the text the user wrote.
 
@@ -17,7 +19,7 @@ use core::fmt;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Unit {
-    /// `D`, days (TIME only).
+    /// `D`, days (TIME and LTIME).
     Day,
     /// `H`, hours.
     Hour,
@@ -27,22 +29,56 @@ pub enum Unit {
     Second,
     /// `MS`, milliseconds.
     Milli,
+    /// `US`, microseconds (LTIME only).
+    Micro,
+    /// `NS`, nanoseconds (LTIME only).
+    Nano,
 }
 
 impl Unit {
-    /// The unit's length in milliseconds.
+    /// Every unit, from the largest to the smallest: the order a literal writes them in.
+    pub const ALL: [Unit; 7] = [
+        Unit::Day,
+        Unit::Hour,
+        Unit::Minute,
+        Unit::Second,
+        Unit::Milli,
+        Unit::Micro,
+        Unit::Nano,
+    ];
+
+    /// The unit's length in nanoseconds.
     ///
     /// ```
     /// use plc_timers::time::Unit;
-    /// assert_eq!(Unit::Minute.millis(), 60_000);
+    /// assert_eq!(Unit::Minute.nanos(), 60_000_000_000);
+    /// assert_eq!(Unit::Micro.nanos(), 1_000);
     /// ```
-    pub const fn millis(self) -> u64 {
+    pub const fn nanos(self) -> u64 {
         match self {
-            Unit::Day => 86_400_000,
-            Unit::Hour => 3_600_000,
-            Unit::Minute => 60_000,
-            Unit::Second => 1_000,
-            Unit::Milli => 1,
+            Unit::Day => 86_400_000_000_000,
+            Unit::Hour => 3_600_000_000_000,
+            Unit::Minute => 60_000_000_000,
+            Unit::Second => 1_000_000_000,
+            Unit::Milli => 1_000_000,
+            Unit::Micro => 1_000,
+            Unit::Nano => 1,
+        }
+    }
+
+    /// The unit's length in the base unit of `what` (ms for S5TIME and TIME, ns for LTIME), for
+    /// the units `what` has. A match, not a division: the lexer stays free of divisions.
+    const fn in_base(self, what: LiteralType) -> u64 {
+        match what {
+            LiteralType::LTime => self.nanos(),
+            LiteralType::S5Time | LiteralType::Time => match self {
+                Unit::Day => 86_400_000,
+                Unit::Hour => 3_600_000,
+                Unit::Minute => 60_000,
+                Unit::Second => 1_000,
+                // The sub-millisecond units are not units of these types (`units_of`).
+                Unit::Milli | Unit::Micro | Unit::Nano => 1,
+            },
         }
     }
 
@@ -53,11 +89,11 @@ impl Unit {
             Unit::Day => u64::MAX,
             Unit::Hour => 24,
             Unit::Minute | Unit::Second => 60,
-            Unit::Milli => 1_000,
+            Unit::Milli | Unit::Micro | Unit::Nano => 1_000,
         }
     }
 
-    /// The unit as literals write it (`D`, `H`, `M`, `S`, `MS`).
+    /// The unit as literals write it (`D`, `H`, `M`, `S`, `MS`, `US`, `NS`).
     pub const fn symbol(self) -> &'static str {
         match self {
             Unit::Day => "D",
@@ -65,7 +101,25 @@ impl Unit {
             Unit::Minute => "M",
             Unit::Second => "S",
             Unit::Milli => "MS",
+            Unit::Micro => "US",
+            Unit::Nano => "NS",
         }
+    }
+}
+
+/// The units a literal of `what` may use, largest first: S5TIME H to MS, TIME D to MS, LTIME D
+/// to NS.
+const fn units_of(what: LiteralType) -> &'static [Unit] {
+    match what {
+        LiteralType::S5Time => &[Unit::Hour, Unit::Minute, Unit::Second, Unit::Milli],
+        LiteralType::Time => &[
+            Unit::Day,
+            Unit::Hour,
+            Unit::Minute,
+            Unit::Second,
+            Unit::Milli,
+        ],
+        LiteralType::LTime => &Unit::ALL,
     }
 }
 
@@ -81,6 +135,8 @@ pub enum LiteralType {
     S5Time,
     /// `TIME`: `T#…`, `TIME#…`, whole milliseconds.
     Time,
+    /// `LTIME`: `LT#…`, `LTIME#…`, whole nanoseconds.
+    LTime,
 }
 
 impl LiteralType {
@@ -89,6 +145,7 @@ impl LiteralType {
         match self {
             LiteralType::S5Time => "S5TIME",
             LiteralType::Time => "TIME",
+            LiteralType::LTime => "LTIME",
         }
     }
 }
@@ -117,7 +174,7 @@ pub enum LiteralErrorKind {
     MissingDigits,
     /// A character that has no place in the literal.
     UnexpectedChar(char),
-    /// A unit appears twice, or after a smaller one (the order is D, H, M, S, MS).
+    /// A unit appears twice, or after a smaller one (the order is D, H, M, S, MS, US, NS).
     UnitOrder(Unit),
     /// A component after the first exceeds its unit's range (e.g. 75 minutes after hours).
     ComponentRange(Unit, u64),
@@ -170,12 +227,16 @@ impl LiteralError {
 impl fmt::Display for LiteralError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let (what, at) = (self.what.name(), self.position);
-        let s5 = matches!(self.what, LiteralType::S5Time);
-        let units = if s5 { "H, M, S, MS" } else { "D, H, M, S, MS" };
-        let forms = if s5 {
-            "S5T#aH_bbM_ccS_dddMS, S5TIME#… or W#16#wxyz"
-        } else {
-            "T#…, TIME#… (e.g. T#2S_200MS, T#-5S) or whole milliseconds"
+        let (units, forms) = match self.what {
+            LiteralType::S5Time => ("H, M, S, MS", "S5T#aH_bbM_ccS_dddMS, S5TIME#… or W#16#wxyz"),
+            LiteralType::Time => (
+                "D, H, M, S, MS",
+                "T#…, TIME#… (e.g. T#2S_200MS, T#-5S) or whole milliseconds",
+            ),
+            LiteralType::LTime => (
+                "D, H, M, S, MS, US, NS",
+                "LT#…, LTIME#… (e.g. LT#1MS_500US, LT#-5S) or whole nanoseconds",
+            ),
         };
         write!(f, "invalid {what} literal at byte {at}: ")?;
         match self.kind {
@@ -215,17 +276,22 @@ impl fmt::Display for LiteralError {
                 f,
                 "an S5TIME cannot be negative; it is 0 to 9 990 s (S5T#0MS to S5T#2H46M30S)"
             ),
-            LiteralErrorKind::OutOfRange => {
-                if s5 {
+            LiteralErrorKind::OutOfRange => match self.what {
+                LiteralType::S5Time => {
                     write!(f, "above the S5TIME maximum of 9 990 s (S5T#2H46M30S)")
-                } else {
-                    write!(
-                        f,
-                        "outside T#-24D_20H_31M_23S_648MS ..= T#24D_20H_31M_23S_647MS \
-                         (-2147483648 ..= 2147483647 ms)"
-                    )
                 }
-            }
+                LiteralType::Time => write!(
+                    f,
+                    "outside T#-24D_20H_31M_23S_648MS ..= T#24D_20H_31M_23S_647MS \
+                     (-2147483648 ..= 2147483647 ms)"
+                ),
+                LiteralType::LTime => write!(
+                    f,
+                    "outside LT#-106751D_23H_47M_16S_854MS_775US_808NS ..= \
+                     LT#106751D_23H_47M_16S_854MS_775US_807NS \
+                     (-9223372036854775808 ..= 9223372036854775807 ns)"
+                ),
+            },
         }
     }
 }
@@ -272,20 +338,34 @@ pub(crate) const fn char_at(text: &[u8], i: usize) -> char {
     }
 }
 
-/// The unit spelled by the ASCII letters `text[from..to]`, if any (`D` only when `days`).
-const fn unit_of(text: &[u8], from: usize, to: usize, days: bool) -> Option<Unit> {
+/// The unit spelled by the ASCII letters `text[from..to]`, if it is one of `what`'s units.
+const fn unit_of(text: &[u8], from: usize, to: usize, what: LiteralType) -> Option<Unit> {
     let first = text[from].to_ascii_uppercase();
-    match to - from {
+    let unit = match to - from {
         1 => match first {
-            b'D' if days => Some(Unit::Day),
-            b'H' => Some(Unit::Hour),
-            b'M' => Some(Unit::Minute),
-            b'S' => Some(Unit::Second),
-            _ => None,
+            b'D' => Unit::Day,
+            b'H' => Unit::Hour,
+            b'M' => Unit::Minute,
+            b'S' => Unit::Second,
+            _ => return None,
         },
-        2 if first == b'M' && text[from + 1].eq_ignore_ascii_case(&b'S') => Some(Unit::Milli),
-        _ => None,
+        2 if text[from + 1].eq_ignore_ascii_case(&b'S') => match first {
+            b'M' => Unit::Milli,
+            b'U' => Unit::Micro,
+            b'N' => Unit::Nano,
+            _ => return None,
+        },
+        _ => return None,
+    };
+    let units = units_of(what);
+    let mut i = 0;
+    while i < units.len() {
+        if units[i] as u8 == unit as u8 {
+            return Some(unit);
+        }
+        i += 1;
     }
+    None
 }
 
 const fn fail(
@@ -296,14 +376,13 @@ const fn fail(
     Err(LiteralError::new(what, position, kind))
 }
 
-/// Parses the components of `text` from byte `start` to the end into a total number of
-/// milliseconds. `days` says whether `D` is a unit here. Positions in errors are byte offsets
-/// of `text`.
+/// Parses the components of `text` from byte `start` to the end into a total count of `what`'s
+/// base unit (ms for S5TIME and TIME, ns for LTIME), with `what`'s units. Positions in errors
+/// are byte offsets of `text`.
 pub(crate) const fn parse_components(
     what: LiteralType,
     text: &[u8],
     start: usize,
-    days: bool,
 ) -> Result<u64, LiteralError> {
     let len = text.len();
     if start >= len {
@@ -361,7 +440,7 @@ pub(crate) const fn parse_components(
                 )
             };
         }
-        let unit = match unit_of(text, unit_start, i, days) {
+        let unit = match unit_of(text, unit_start, i, what) {
             Some(u) => u,
             None => return fail(what, unit_start, LiteralErrorKind::UnknownUnit),
         };
@@ -374,7 +453,7 @@ pub(crate) const fn parse_components(
             }
         }
         last = Some(unit);
-        total = match value.checked_mul(unit.millis()) {
+        total = match value.checked_mul(unit.in_base(what)) {
             Some(v) => match total.checked_add(v) {
                 Some(t) => t,
                 None => return fail(what, number, LiteralErrorKind::Overflow),
@@ -385,33 +464,28 @@ pub(crate) const fn parse_components(
     Ok(total)
 }
 
-/// Writes `millis` as components (`2H46M30S`), with `sep` between them, `D` included when
-/// `days`; zero components are omitted, and zero itself is written `0MS`.
+/// Writes `value`, a count of `what`'s base unit, as components (`2H46M30S`) in `what`'s units,
+/// with `sep` between them; zero components are omitted, and zero itself is written with the
+/// smallest unit (`0MS`, `0NS`).
 pub(crate) fn write_components(
     f: &mut fmt::Formatter<'_>,
-    millis: u64,
-    days: bool,
+    value: u64,
+    what: LiteralType,
     sep: &str,
 ) -> fmt::Result {
-    if millis == 0 {
-        return f.write_str("0MS");
+    let units = units_of(what);
+    if value == 0 {
+        return match units.last() {
+            Some(smallest) => write!(f, "0{}", smallest.symbol()),
+            None => Ok(()),
+        };
     }
-    let units: &[Unit] = if days {
-        &[
-            Unit::Day,
-            Unit::Hour,
-            Unit::Minute,
-            Unit::Second,
-            Unit::Milli,
-        ]
-    } else {
-        &[Unit::Hour, Unit::Minute, Unit::Second, Unit::Milli]
-    };
-    let mut rest = millis;
+    let mut rest = value;
     let mut first = true;
     for &unit in units {
-        let n = rest / unit.millis();
-        rest %= unit.millis();
+        let size = unit.in_base(what);
+        let n = rest / size;
+        rest %= size;
         if n > 0 {
             if !first {
                 f.write_str(sep)?;
@@ -421,4 +495,75 @@ pub(crate) fn write_components(
         }
     }
     Ok(())
+}
+
+/// A signed duration literal of `what` (TIME or LTIME) taken apart: whether it is negative, its
+/// magnitude in the base unit, and the byte offset where the value begins (a range error
+/// points there). The accepted forms: the type's prefixes (`TIME#`/`T#`, `LTIME#`/`LT#`, any
+/// case) with an optional `-` and components, or a plain whole number with an optional sign.
+/// The caller checks the range, which differs by type.
+pub(crate) const fn parse_signed(
+    what: LiteralType,
+    text: &[u8],
+) -> Result<(bool, u64, usize), LiteralError> {
+    if text.is_empty() {
+        return Err(LiteralError::new(what, 0, LiteralErrorKind::Empty));
+    }
+    let (long, short) = match what {
+        LiteralType::LTime => ("LTIME#", "LT#"),
+        LiteralType::Time | LiteralType::S5Time => ("TIME#", "T#"),
+    };
+    let prefix = if has_prefix_ci(text, 0, long) {
+        long.len()
+    } else if has_prefix_ci(text, 0, short) {
+        short.len()
+    } else {
+        0
+    };
+    if prefix > 0 {
+        let negative = prefix < text.len() && text[prefix] == b'-';
+        match parse_components(what, text, prefix + negative as usize) {
+            Ok(m) => Ok((negative, m, prefix)),
+            Err(e) => Err(e),
+        }
+    } else {
+        match parse_plain(what, text) {
+            Ok((negative, m)) => Ok((negative, m, 0)),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+/// A plain whole number with an optional sign (`-5`, `+5`, `5`): its sign and magnitude.
+const fn parse_plain(what: LiteralType, b: &[u8]) -> Result<(bool, u64), LiteralError> {
+    let offset = if b[0] == b'-' || b[0] == b'+' { 1 } else { 0 };
+    if offset == b.len() {
+        return Err(LiteralError::new(
+            what,
+            offset,
+            LiteralErrorKind::MissingDigits,
+        ));
+    }
+    let mut value: u64 = 0;
+    let mut i = offset;
+    while i < b.len() {
+        if !b[i].is_ascii_digit() {
+            // A letter first means a missing or unknown prefix (`X#5S`, `5S` without `T#`).
+            let kind = if b[i].is_ascii_alphabetic() && i == offset {
+                LiteralErrorKind::Prefix
+            } else {
+                LiteralErrorKind::UnexpectedChar(char_at(b, i))
+            };
+            return Err(LiteralError::new(what, i, kind));
+        }
+        value = match value.checked_mul(10) {
+            Some(v) => match v.checked_add((b[i] - b'0') as u64) {
+                Some(v) => v,
+                None => return Err(LiteralError::new(what, offset, LiteralErrorKind::Overflow)),
+            },
+            None => return Err(LiteralError::new(what, offset, LiteralErrorKind::Overflow)),
+        };
+        i += 1;
+    }
+    Ok((b[0] == b'-', value))
 }

@@ -3,11 +3,12 @@
 //! - [`S5Time`] and [`TimeBase`]: the 16-bit word with three BCD digits and a time base
 //!   (LAD manual §9.1; Berger §7); literals `S5T#…`, `S5TIME#…`, `W#16#…`.
 //! - [`Time`]: signed 32-bit milliseconds with `T#…` literals (S7-1200 manual, TIME data type).
+//! - [`LTime`]: signed 64-bit nanoseconds with `LT#…` literals (S7-1500, LTIME data type).
 //! - [`CpuTime`]: the CPU's millisecond clock, the one time argument every timer takes;
 //!   [`clock::ClockWord`]: the wrapping clock word the IEC timers compute with.
 //! - [`LiteralError`]: what was wrong with a literal, and where.
 //!
-//! Both literal parsers are `const fn`, so a constant can be written as a literal and checked at
+//! The literal parsers are `const fn`, so a constant can be written as a literal and checked at
 //! compile time:
 //!
 //! ```
@@ -22,6 +23,7 @@ mod bcd;
 pub mod clock;
 mod iec_time;
 mod literal;
+mod ltime;
 mod s5time;
 
 pub(crate) use bcd::BCD3_TABLE;
@@ -30,6 +32,7 @@ pub use clock::CpuTime;
 pub use iec_time::Time;
 pub(crate) use literal::has_prefix_ci;
 pub use literal::{LiteralError, LiteralErrorKind, LiteralType, Unit};
+pub use ltime::LTime;
 pub use s5time::{S5Time, S5TimeError, TimeBase};
 
 /// An [`S5Time`] constant from a literal, checked at compile time: a malformed literal, a BCD
@@ -69,6 +72,26 @@ macro_rules! time {
         const VALUE: $crate::time::Time = match $crate::time::Time::parse($literal) {
             Ok(t) => t,
             Err(_) => panic!(concat!("not a valid TIME literal: ", $literal)),
+        };
+        VALUE
+    }};
+}
+
+/// An [`LTime`] constant from a literal, checked at compile time.
+///
+/// ```
+/// assert_eq!(plc_timers::ltime!("LT#1MS_500US").as_nanos(), 1_500_000);
+/// ```
+///
+/// ```compile_fail
+/// let too_long = plc_timers::ltime!("LT#106752D"); // above LT#106751D_23H_47M_16S_854MS_775US_807NS
+/// ```
+#[macro_export]
+macro_rules! ltime {
+    ($literal:literal) => {{
+        const VALUE: $crate::time::LTime = match $crate::time::LTime::parse($literal) {
+            Ok(t) => t,
+            Err(_) => panic!(concat!("not a valid LTIME literal: ", $literal)),
         };
         VALUE
     }};

@@ -374,7 +374,7 @@ impl S5Time {
         if offset < b.len() && b[offset] == b'-' {
             return fail(offset, LiteralErrorKind::Negative);
         }
-        match parse_components(WHAT, b, offset, false) {
+        match parse_components(WHAT, b, offset) {
             Ok(millis) => match S5Time::from_millis(millis) {
                 Ok(t) => Ok(t),
                 Err(_) => fail(offset, LiteralErrorKind::OutOfRange),
@@ -399,6 +399,6 @@ impl fmt::Display for S5Time {
     /// automatic base, which may differ from this value's base for the same duration.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("S5T#")?;
-        write_components(f, u64::from(self.as_millis()), false, "")
+        write_components(f, u64::from(self.as_millis()), LiteralType::S5Time, "")
     }
 }
