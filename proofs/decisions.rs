@@ -281,7 +281,7 @@ pub fn prop_below_resolution(ms: u64) -> bool {
             );
         }
     }
-    ms % base != 0
+    !ms.is_multiple_of(base)
 }
 
 /// Exhaustive over every millisecond from 0 to 9 990 s.
