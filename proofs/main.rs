@@ -19,6 +19,7 @@
 mod cover;
 
 mod counter;
+mod decisions;
 mod explain;
 mod iec;
 mod s5;

@@ -8,7 +8,7 @@ use plc_timers_cli::trace::{check, Implementation};
 use sha2::{Digest, Sha256};
 
 /// The SHA-256 of every vector's directory, file name and text, and the README, in order.
-const GOLDEN: &str = "9b912c62ff6d28d2c40020ab60439d943385eac665aec4af1c35c88a4cc53b09";
+const GOLDEN: &str = "ef641f3a86f96cb51638f3c24225f1e65c31821228df4cb7d22bcd0fdf34a7c2";
 
 fn digest(all: &[Vector]) -> String {
     let mut h = Sha256::new();

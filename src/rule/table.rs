@@ -37,6 +37,8 @@ pub enum Rule {
     LTIME_RANGE_01,
     /// LTIME-LIT-01 (`spec/requirements/time.toml`): LTIME literals: LT#… or LTIME#… with units D, H, M, S, MS, US, NS (case-insensitive, optional underscores, optional minus after #, largest unit first, each once, later ones within their unit's range), or a plain number of nanoseconds; Display gives LT#1MS\_500US (LT#0NS for zero); parsing it gives the same value.
     LTIME_LIT_01,
+    /// S5T-RES-01 (`spec/requirements/time.toml`): A duration is cut down to whole units of its automatic base without error: the part below the base is lost (S5T#10S\_5MS is 100 units of 100 ms), and any duration below 10 ms, such as S5T#5MS, is S5T#0MS: a timer started with it has the value 0 (S5TMR-ZERO-01), active in its starting execution and run out at its next.
+    S5T_RES_01,
     /// S5TMR-TICK-01 (`spec/requirements/s5.toml`): The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t\_prev, t\] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.
     S5TMR_TICK_01,
     /// S5TMR-EXPIRE-01 (`spec/requirements/s5.toml`): When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S\_PULSE, S\_PEXT and S\_OFFDT, 1 for S\_ODT and S\_ODTS.
@@ -71,6 +73,10 @@ pub enum Rule {
     S5_EQUIV_02,
     /// S5-AREA-01 (`spec/requirements/s5.toml`): A time-base tick of the timer memory area updates every running timer of that base in one pass, as the reference tick of each timer.
     S5_AREA_01,
+    /// S5TMR-TV-01 (`spec/requirements/s5.toml`): TV is read only by a start: a TV changed while the timer runs, or while it is stopped, changes nothing (value, base, Q, BI, BCD) until the next start, which loads the TV at the box in that execution.
+    S5TMR_TV_01,
+    /// S5TMR-TVBCD-01 (`spec/requirements/s5.toml`): A TV whose value field has a digit above 9 never reaches a timer: the box takes an S5TIME, which only a word of three BCD digits makes (bits 15-14 ignored), and such a word is refused with an error naming the digit; every valid word starts a timer with its BCD value in binary at BI and its digits and base at BCD.
+    S5TMR_TVBCD_01,
     /// IEC-START-01 (`spec/requirements/iec.toml`): On the starting edge (rising IN for TP and TON, falling IN for TOF) the CPU millisecond clock is copied into START; each update computes elapsed = now - START.
     IEC_START_01,
     /// IEC-EDGE-01 (`spec/requirements/iec.toml`): A stopped timer starts only on its starting edge; TONR times whenever IN = 1 and R = 0 (see TONR-RESUME-01).
@@ -113,6 +119,8 @@ pub enum Rule {
     IEC_BANK_01,
     /// IEC-EQUIV-02 (`spec/requirements/iec.toml`): From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC\_TIMER; every state on the way is valid (ET \<= PT).
     IEC_EQUIV_02,
+    /// IEC-SHARE-01 (`spec/requirements/iec.toml`): Several instructions may share one IEC\_TIMER structure: it holds one state, and each call acts by its own instruction's rule on the members the previous call left (stored IN, START, ET, Q), whichever instruction made it: a TON called with IN = 1 after a TP that stored IN = 1 sees no rising edge; a TONR takes a Q of 1 left by a TOF as its own expiry; a read through the structure updates by the rule of the instruction that executed last.
+    IEC_SHARE_01,
     /// CNT-EDGE-01 (`spec/requirements/counter.toml`): CU and CD count on a change from 0 to 1; their edge memories take the input on every call, also while R or LD holds, so releasing R with CU held does not count.
     CNT_EDGE_01,
     /// CNT-PRIO-01 (`spec/requirements/counter.toml`): R and LD are levels with priority R \> LD \> counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.
@@ -181,10 +189,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 81;
+    pub const COUNT: usize = 85;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 81] = [
+    pub const ALL: [Rule; 85] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -196,6 +204,7 @@ impl Rule {
         Rule::TIME_ARITH_01,
         Rule::LTIME_RANGE_01,
         Rule::LTIME_LIT_01,
+        Rule::S5T_RES_01,
         Rule::S5TMR_TICK_01,
         Rule::S5TMR_EXPIRE_01,
         Rule::S5TMR_ZERO_01,
@@ -213,6 +222,8 @@ impl Rule {
         Rule::S5_EQUIV_01,
         Rule::S5_EQUIV_02,
         Rule::S5_AREA_01,
+        Rule::S5TMR_TV_01,
+        Rule::S5TMR_TVBCD_01,
         Rule::IEC_START_01,
         Rule::IEC_EDGE_01,
         Rule::IEC_PT_LATCH_01,
@@ -234,6 +245,7 @@ impl Rule {
         Rule::IEC_STRUCT_01,
         Rule::IEC_BANK_01,
         Rule::IEC_EQUIV_02,
+        Rule::IEC_SHARE_01,
         Rule::CNT_EDGE_01,
         Rule::CNT_PRIO_01,
         Rule::CNT_SAT_01,
@@ -282,6 +294,7 @@ impl Rule {
             Rule::TIME_ARITH_01 => "TIME-ARITH-01",
             Rule::LTIME_RANGE_01 => "LTIME-RANGE-01",
             Rule::LTIME_LIT_01 => "LTIME-LIT-01",
+            Rule::S5T_RES_01 => "S5T-RES-01",
             Rule::S5TMR_TICK_01 => "S5TMR-TICK-01",
             Rule::S5TMR_EXPIRE_01 => "S5TMR-EXPIRE-01",
             Rule::S5TMR_ZERO_01 => "S5TMR-ZERO-01",
@@ -299,6 +312,8 @@ impl Rule {
             Rule::S5_EQUIV_01 => "S5-EQUIV-01",
             Rule::S5_EQUIV_02 => "S5-EQUIV-02",
             Rule::S5_AREA_01 => "S5-AREA-01",
+            Rule::S5TMR_TV_01 => "S5TMR-TV-01",
+            Rule::S5TMR_TVBCD_01 => "S5TMR-TVBCD-01",
             Rule::IEC_START_01 => "IEC-START-01",
             Rule::IEC_EDGE_01 => "IEC-EDGE-01",
             Rule::IEC_PT_LATCH_01 => "IEC-PT-LATCH-01",
@@ -320,6 +335,7 @@ impl Rule {
             Rule::IEC_STRUCT_01 => "IEC-STRUCT-01",
             Rule::IEC_BANK_01 => "IEC-BANK-01",
             Rule::IEC_EQUIV_02 => "IEC-EQUIV-02",
+            Rule::IEC_SHARE_01 => "IEC-SHARE-01",
             Rule::CNT_EDGE_01 => "CNT-EDGE-01",
             Rule::CNT_PRIO_01 => "CNT-PRIO-01",
             Rule::CNT_SAT_01 => "CNT-SAT-01",
@@ -369,6 +385,7 @@ impl Rule {
             Rule::TIME_ARITH_01 => "TIME arithmetic never wraps: checked add, sub and negation give None exactly when the exact result leaves T#-24d_20h_31m_23s_648ms .. T#24d_20h_31m_23s_647ms; saturating add and sub clamp to the ends.",
             Rule::LTIME_RANGE_01 => "LTIME (S7-1500) is a signed 64-bit count of nanoseconds, LT#-106751d_23h_47m_16s_854ms_775us_808ns .. LT#106751d_23h_47m_16s_854ms_775us_807ns; one past either end is an error.",
             Rule::LTIME_LIT_01 => "LTIME literals: LT#… or LTIME#… with units D, H, M, S, MS, US, NS (case-insensitive, optional underscores, optional minus after #, largest unit first, each once, later ones within their unit's range), or a plain number of nanoseconds; Display gives LT#1MS_500US (LT#0NS for zero); parsing it gives the same value.",
+            Rule::S5T_RES_01 => "A duration is cut down to whole units of its automatic base without error: the part below the base is lost (S5T#10S_5MS is 100 units of 100 ms), and any duration below 10 ms, such as S5T#5MS, is S5T#0MS: a timer started with it has the value 0 (S5TMR-ZERO-01), active in its starting execution and run out at its next.",
             Rule::S5TMR_TICK_01 => "The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t_prev, t] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.",
             Rule::S5TMR_EXPIRE_01 => "When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S_PULSE, S_PEXT and S_OFFDT, 1 for S_ODT and S_ODTS.",
             Rule::S5TMR_ZERO_01 => "A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.",
@@ -386,6 +403,8 @@ impl Rule {
             Rule::S5_EQUIV_01 => "The packed timer word, mapped through the abstraction function, behaves exactly as the reference on every state, tick count and input.",
             Rule::S5_EQUIV_02 => "From the initial state, every input sequence (S, R, FR, TV, time steps) gives the same outputs and states through the reference (ticks counted per timer from the clock) and the timer memory area (ticks applied per base by the area).",
             Rule::S5_AREA_01 => "A time-base tick of the timer memory area updates every running timer of that base in one pass, as the reference tick of each timer.",
+            Rule::S5TMR_TV_01 => "TV is read only by a start: a TV changed while the timer runs, or while it is stopped, changes nothing (value, base, Q, BI, BCD) until the next start, which loads the TV at the box in that execution.",
+            Rule::S5TMR_TVBCD_01 => "A TV whose value field has a digit above 9 never reaches a timer: the box takes an S5TIME, which only a word of three BCD digits makes (bits 15-14 ignored), and such a word is refused with an error naming the digit; every valid word starts a timer with its BCD value in binary at BI and its digits and base at BCD.",
             Rule::IEC_START_01 => "On the starting edge (rising IN for TP and TON, falling IN for TOF) the CPU millisecond clock is copied into START; each update computes elapsed = now - START.",
             Rule::IEC_EDGE_01 => "A stopped timer starts only on its starting edge; TONR times whenever IN = 1 and R = 0 (see TONR-RESUME-01).",
             Rule::IEC_PT_LATCH_01 => "While a timer runs, a change of PT at the box has no effect: the preset is latched at the start (TONR: when it resumes).",
@@ -407,6 +426,7 @@ impl Rule {
             Rule::IEC_STRUCT_01 => "The optimized IEC_TIMER is 16 bytes, #[repr(C)], and behaves exactly as the reference for every operation, through the abstraction function.",
             Rule::IEC_BANK_01 => "The TON bank (structure of arrays, bit sets for IN, Q and running) gives every timer exactly the outputs of a reference TON called once per scan.",
             Rule::IEC_EQUIV_02 => "From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC_TIMER; every state on the way is valid (ET <= PT).",
+            Rule::IEC_SHARE_01 => "Several instructions may share one IEC_TIMER structure: it holds one state, and each call acts by its own instruction's rule on the members the previous call left (stored IN, START, ET, Q), whichever instruction made it: a TON called with IN = 1 after a TP that stored IN = 1 sees no rising edge; a TONR takes a Q of 1 left by a TOF as its own expiry; a read through the structure updates by the rule of the instruction that executed last.",
             Rule::CNT_EDGE_01 => "CU and CD count on a change from 0 to 1; their edge memories take the input on every call, also while R or LD holds, so releasing R with CU held does not count.",
             Rule::CNT_PRIO_01 => "R and LD are levels with priority R > LD > counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.",
             Rule::CNT_SAT_01 => "CV saturates at the type's limits: counting up at MAX and down at MIN leave CV unchanged; it never wraps and never panics.",

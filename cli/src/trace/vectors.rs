@@ -478,6 +478,11 @@ fn decisions(block: Block) -> Option<Trace> {
             (1400, &[S], "W#16#3002"),
             (6281, &[S], "W#16#3002"),
             (6290, &[R], "W#16#3002"),
+            // S5T-RES-01 (decisions.md R16): S5T#5MS is cut to S5T#0MS: the pulse shows Q = 1
+            // in its starting execution (6310) and is run out at the next (6311).
+            (6300, &[], "S5T#5MS"),
+            (6310, &[S], "S5T#5MS"),
+            (6311, &[S], "S5T#5MS"),
         ]),
         Block::SPext => rows(&[
             // S5TMR-R-01 (s5.md D3): a run-out S_PEXT keeps its base in BCD until R clears it.
@@ -487,6 +492,15 @@ fn decisions(block: Block) -> Option<Trace> {
             (3000, &[], "W#16#2002"),
             (3010, &[R], "W#16#2002"),
             (3020, &[], "W#16#2002"),
+            // S5TMR-TV-01 (decisions.md R14): TV changed while the timer runs changes nothing:
+            // started at 3100 with 10 units, BI 7 at 3130 and 4 at 3160 whatever TV says; run
+            // out at 3200; the next start (3300) loads the TV of its row, 50 units.
+            (3100, &[S], "S5T#100MS"),
+            (3130, &[], "S5T#500MS"),
+            (3160, &[], "S5T#0MS"),
+            (3200, &[], "S5T#0MS"),
+            (3300, &[S], "S5T#500MS"),
+            (3310, &[R], "S5T#500MS"),
         ]),
         Block::SOdt => rows(&[
             // SD-Q-01: restarted by FR with S held after expiry, Q = 0 while the new time runs
@@ -559,6 +573,18 @@ fn decisions(block: Block) -> Option<Trace> {
             (250, &[In], "T#20MS"),
             (260, &[In], "T#20MS"),
             (270, &[], "T#20MS"),
+            // IEC-RT-01 (decisions.md R1): RT energised on every row with IN held: each row's
+            // box call sees a rising edge and starts a pulse, so Q = 1 and ET 0 from 300 to
+            // 340, longer than PT; the pulse of 340 runs its full PT once RT is released (ET
+            // 10 at 350, Q = 0 at 360).
+            (300, &[In, Rt], "T#20MS"),
+            (310, &[In, Rt], "T#20MS"),
+            (320, &[In, Rt], "T#20MS"),
+            (330, &[In, Rt], "T#20MS"),
+            (340, &[In, Rt], "T#20MS"),
+            (350, &[In], "T#20MS"),
+            (360, &[In], "T#20MS"),
+            (370, &[], "T#20MS"),
         ]),
         Block::Ton => rows(&[
             // IEC-EXPIRY-01: Q rises in the call where ET reaches PT, not one call later.
