@@ -107,7 +107,7 @@ pub enum Rule {
     TONR_RESUME_01,
     /// TONR-R-01 (`spec/requirements/iec.toml`): TONR's R = 1 resets ET and Q to 0 and stops it, before anything else in the call.
     TONR_R_01,
-    /// IEC-RT-01 (`spec/requirements/iec.toml`): The RT coil zeroes the timer data: ET = 0, Q = 0, stopped, and the stored IN cleared (the preset stays). An IN still 1 at the next call is therefore a rising edge: a TON starts timing again from 0 and a TP starts a new pulse (RT ends a running pulse for good only when IN is 0); a TONR times again from ET = 0; RT on a running TOF ends the delay with Q = 0 (no new falling edge follows).
+    /// IEC-RT-01 (`spec/requirements/iec.toml`): The RT coil zeroes the timer data: ET = 0, Q = 0, stopped, and the stored IN cleared (the preset stays). An IN still 1 at the next call is therefore a rising edge: a TON starts timing again from 0 and a TP starts a new pulse (RT ends a running pulse for good only when IN is 0), so with RT energised on every call and IN held at 1, TP's Q stays 1 and ET 0 until RT is released, after which the last pulse runs its full PT; a TONR times again from ET = 0; RT on a running TOF ends the delay with Q = 0 (no new falling edge follows).
     IEC_RT_01,
     /// IEC-PT-COIL-01 (`spec/requirements/iec.toml`): The PT coil loads the structure's preset; a running timer uses it from its next update; ET is clamped to it.
     IEC_PT_COIL_01,
@@ -420,7 +420,7 @@ impl Rule {
             Rule::TONR_IN_01 => "TONR: changing IN to FALSE stops it without reset (ET keeps the accumulated time, counted up to that call); IN back to TRUE continues from it; Q stays 1 after expiry until R.",
             Rule::TONR_RESUME_01 => "TONR times whenever IN = 1 and R = 0: it (re)starts with the PT of that moment, START shifted back by the accumulated ET; after R is released with IN held, it starts again from 0.",
             Rule::TONR_R_01 => "TONR's R = 1 resets ET and Q to 0 and stops it, before anything else in the call.",
-            Rule::IEC_RT_01 => "The RT coil zeroes the timer data: ET = 0, Q = 0, stopped, and the stored IN cleared (the preset stays). An IN still 1 at the next call is therefore a rising edge: a TON starts timing again from 0 and a TP starts a new pulse (RT ends a running pulse for good only when IN is 0); a TONR times again from ET = 0; RT on a running TOF ends the delay with Q = 0 (no new falling edge follows).",
+            Rule::IEC_RT_01 => "The RT coil zeroes the timer data: ET = 0, Q = 0, stopped, and the stored IN cleared (the preset stays). An IN still 1 at the next call is therefore a rising edge: a TON starts timing again from 0 and a TP starts a new pulse (RT ends a running pulse for good only when IN is 0), so with RT energised on every call and IN held at 1, TP's Q stays 1 and ET 0 until RT is released, after which the last pulse runs its full PT; a TONR times again from ET = 0; RT on a running TOF ends the delay with Q = 0 (no new falling edge follows).",
             Rule::IEC_PT_COIL_01 => "The PT coil loads the structure's preset; a running timer uses it from its next update; ET is clamped to it.",
             Rule::IEC_RETAIN_01 => "On RUN-STOP-RUN a non-retentive structure returns to its initial values; a retentive one keeps its data (its START keeps counting on the free-running clock).",
             Rule::IEC_STRUCT_01 => "The optimized IEC_TIMER is 16 bytes, #[repr(C)], and behaves exactly as the reference for every operation, through the abstraction function.",
