@@ -1506,15 +1506,13 @@ fn exhaustive_u8_wrap_rules() {
     });
 }
 
-/// `op` moved to PT or one ms before it (by the low bit of its time) when it is a call or a
-/// read: the instants at which a running timer `st` expires or is about to, which random 32-bit
-/// times almost never reach. Harnesses run it beside each random case under `cargo test` (Kani
-/// covers it with the rest).
-pub fn near_expiry(st: IecState<u32>, op: Op) -> Op {
-    let at = |now: CpuTime| {
-        CpuTime::from_millis(
-            u64::from(st.start) + u64::from(st.pt) - (now.as_millis() & 1).min(u64::from(st.pt)),
-        )
+/// `op` moved to `before` ms before PT (at least 0 ms after START) when it is a call or a read:
+/// with `before` 0 and 1, the instants at which a running timer `st` expires or is about to,
+/// which random 32-bit times almost never reach. Harnesses run them beside each random case
+/// under `cargo test` (Kani covers them with the rest).
+pub fn near_expiry(st: IecState<u32>, op: Op, before: u64) -> Op {
+    let at = |_: CpuTime| {
+        CpuTime::from_millis(u64::from(st.start) + u64::from(st.pt) - before.min(u64::from(st.pt)))
     };
     match op {
         Op::Call(kind, now, input) => Op::Call(kind, at(now), input),
@@ -1527,7 +1525,7 @@ pub fn near_expiry(st: IecState<u32>, op: Op) -> Op {
 /// The body of the per-kind harnesses: `st` and `op` made of `kind` (a state of another kind
 /// becomes one of this kind, a call one of this kind; PT and ET within the TIME range), every
 /// IEC rule with the kind covers `K`, the structure's layout; under `cargo test` also the same
-/// case near expiry.
+/// case at PT and one ms before it ([`near_expiry`]).
 pub fn iec_rules_case<K: KindCovers>(kind: IecKind, st: IecState<u32>, op: Op) {
     let st = IecState {
         kind: st.kind.map(|_| kind),
@@ -1542,7 +1540,9 @@ pub fn iec_rules_case<K: KindCovers>(kind: IecKind, st: IecState<u32>, op: Op) {
     prop_iec_rules::<u32, K>(st, op);
     prop_struct(st);
     #[cfg(not(kani))]
-    prop_iec_rules::<u32, K>(st, near_expiry(st, op));
+    for before in [0, 1] {
+        prop_iec_rules::<u32, K>(st, near_expiry(st, op, before));
+    }
 }
 
 macro_rules! iec_rules_harness {
