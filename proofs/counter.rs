@@ -700,7 +700,7 @@ fn exhaustive_s5_preset_texts() {
 // the area's box call and the area's STL sequence FR, CU, CD, S, R).
 // ---------------------------------------------------------------------------------------------
 
-use crate::cover::cover;
+use crate::cover::{cover, covers};
 
 /// One IEC counter call through each implementation: (name, state after, outputs).
 fn iec_counter_impls<T: CounterInt>(
@@ -770,6 +770,7 @@ fn iec_counter_impls<T: CounterInt>(
 
 /// CNT-EDGE-01, CNT-PRIO-01, CNT-SAT-01, CNT-SIMUL-01, CNT-Q-01, CNT-INPUTS-01, each stated on
 /// its own, in `i128` where `CV +- 1` cannot overflow.
+#[covers]
 pub fn prop_iec_counter_rules<T: CounterInt>(
     kind: CounterKind,
     st: CounterState<T>,
@@ -918,6 +919,26 @@ fn exhaustive_counter_rules_8bit() {
     );
 }
 
+/// `st` with CV at a limit of its type (MAX when CU's memory is 0, else MIN): a state of every
+/// harness's domain that random values of the wide types almost never reach. Harnesses run it
+/// beside each random case under `cargo test` (Kani covers it with the rest).
+pub fn at_limit<T: CounterInt>(st: CounterState<T>) -> CounterState<T> {
+    CounterState {
+        cv: if st.cu_prev { T::MIN } else { T::MAX },
+        ..st
+    }
+}
+
+/// `st` with CV at a limit of the S5 counter (999 when S's memory is 0, else 0): a state of
+/// every harness's domain that random 16-bit values seldom reach. Harnesses run it beside each
+/// random case under `cargo test` (Kani covers it with the rest).
+pub fn s5_at_limit(st: S5CounterState) -> S5CounterState {
+    S5CounterState {
+        cv: if st.s_prev { 0 } else { 999 },
+        ..st
+    }
+}
+
 macro_rules! counter_harness {
     ($name:ident, $t:ty) => {
         /// CNT-EQUIV-01 and every IEC counter rule for this type: random under `cargo test`,
@@ -929,13 +950,20 @@ macro_rules! counter_harness {
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(17))]
         fn $name() {
-            bolero::check!()
-                .with_type::<(CounterKind, CounterState<$t>, CounterInput<$t>)>()
-                .with_iterations(5_000)
-                .for_each(|&(kind, st, i)| {
-                    prop_step_equivalence(kind, st, i);
-                    prop_iec_counter_rules(kind, st, i);
-                });
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                bolero::check!()
+                    .with_type::<(CounterKind, CounterState<$t>, CounterInput<$t>)>()
+                    .with_iterations(5_000)
+                    .for_each(|&(kind, st, i)| {
+                        prop_step_equivalence(kind, st, i);
+                        prop_iec_counter_rules(kind, st, i);
+                        #[cfg(not(kani))]
+                        {
+                            prop_step_equivalence(kind, at_limit(st), i);
+                            prop_iec_counter_rules(kind, at_limit(st), i);
+                        }
+                    });
+            });
         }
     };
 }
@@ -993,6 +1021,7 @@ fn s5_counter_impls(
 }
 
 /// Every S5 counter rule on one call, each stated on its own, through every implementation.
+#[covers]
 pub fn prop_s5_counter_rules(kind: S5CounterKind, st: S5CounterState, i: S5CounterInput) -> bool {
     if !st.is_valid() {
         return false;
@@ -1240,13 +1269,23 @@ fn exhaustive_s5_counter_rules() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(6))]
 fn kani_s5_counter() {
-    bolero::check!()
-        .with_type::<(S5CounterKind, S5CounterState, S5CounterInput)>()
-        .with_iterations(20_000)
-        .for_each(|&(kind, st, i)| {
-            prop_s5_step_equivalence(kind, st, i);
-            prop_s5_counter_rules(kind, st, i);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_s5_counter)),
+        || {
+            bolero::check!()
+                .with_type::<(S5CounterKind, S5CounterState, S5CounterInput)>()
+                .with_iterations(20_000)
+                .for_each(|&(kind, st, i)| {
+                    prop_s5_step_equivalence(kind, st, i);
+                    prop_s5_counter_rules(kind, st, i);
+                    #[cfg(not(kani))]
+                    {
+                        prop_s5_step_equivalence(kind, s5_at_limit(st), i);
+                        prop_s5_counter_rules(kind, s5_at_limit(st), i);
+                    }
+                });
+        },
+    );
 }
 
 /// The bolero harness of the counter memory's STL operations (SC-STL-01, FR included). Symbolic:
@@ -1255,19 +1294,24 @@ fn kani_s5_counter() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_stl_operations() {
-    bolero::check!()
-        .with_type::<(CounterPreset, [(u8, bool); 4])>()
-        .with_iterations(20_000)
-        .for_each(|&(pv, ops)| {
-            let ops = ops.map(|(k, rlo)| match k % 5 {
-                0 => StlOp::Fr(rlo),
-                1 => StlOp::Cu(rlo),
-                2 => StlOp::Cd(rlo),
-                3 => StlOp::S(rlo),
-                _ => StlOp::R(rlo),
-            });
-            prop_stl_operations(pv, &ops);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_stl_operations)),
+        || {
+            bolero::check!()
+                .with_type::<(CounterPreset, [(u8, bool); 4])>()
+                .with_iterations(20_000)
+                .for_each(|&(pv, ops)| {
+                    let ops = ops.map(|(k, rlo)| match k % 5 {
+                        0 => StlOp::Fr(rlo),
+                        1 => StlOp::Cu(rlo),
+                        2 => StlOp::Cd(rlo),
+                        3 => StlOp::S(rlo),
+                        _ => StlOp::R(rlo),
+                    });
+                    prop_stl_operations(pv, &ops);
+                });
+        },
+    );
 }
 
 /// The bolero harness of the array form (CNT-EQUIV-01): 2 counters of each kind, 3 scans.
@@ -1278,17 +1322,22 @@ fn kani_stl_operations() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_call_array() {
-    bolero::check!()
-        .with_type::<(u8, [[u64; 4]; 3], [i16; 2])>()
-        .with_iterations(2_000)
-        .for_each(|(kind, scans, pv)| {
-            let kind = match kind % 3 {
-                0 => CounterKind::Ctu,
-                1 => CounterKind::Ctd,
-                _ => CounterKind::Ctud,
-            };
-            prop_call_array::<i16, 2>(kind, scans, pv)
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_call_array)),
+        || {
+            bolero::check!()
+                .with_type::<(u8, [[u64; 4]; 3], [i16; 2])>()
+                .with_iterations(2_000)
+                .for_each(|(kind, scans, pv)| {
+                    let kind = match kind % 3 {
+                        0 => CounterKind::Ctu,
+                        1 => CounterKind::Ctd,
+                        _ => CounterKind::Ctud,
+                    };
+                    prop_call_array::<i16, 2>(kind, scans, pv)
+                });
+        },
+    );
 }
 
 /// The bolero harness of the CTUD bank (CNT-EQUIV-01): 2 counters, 3 scans. Symbolic: the CU,
@@ -1299,8 +1348,13 @@ fn kani_call_array() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_counter_bank() {
-    bolero::check!()
-        .with_type::<([[u64; 4]; 3], i16)>()
-        .with_iterations(2_000)
-        .for_each(|(scans, pv)| prop_bank::<i16, 2>(scans, *pv));
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_counter_bank)),
+        || {
+            bolero::check!()
+                .with_type::<([[u64; 4]; 3], i16)>()
+                .with_iterations(2_000)
+                .for_each(|(scans, pv)| prop_bank::<i16, 2>(scans, *pv));
+        },
+    );
 }

@@ -1,12 +1,20 @@
 //! Cover targets that must be reachable, and requirement checks that must have run.
 //!
 //! `cover!(condition, "message")` states that some execution of a harness body makes
-//! `condition` true. Under Kani it is `kani::cover!` (the workflow fails a harness whose covers
-//! are not all satisfied). Under `cargo test` it records, per thread, every cover evaluated and
-//! whether it was ever true; the concrete drivers run their bodies inside [`check_covers`] or
+//! `condition` true. Under Kani it is `kani::cover!`: Kani counts, per harness, every cover in
+//! the code the harness can call, and the workflow fails a harness whose covers are not all
+//! satisfied (one in a branch the harness never takes is unreachable, so it fails too).
+//!
+//! Under `cargo test` the same is counted per harness. Every function holding a `cover!` carries
+//! `#[covers]` (proofs/macros; without it `cover!` does not compile), which declares all its
+//! covers when the function is entered, taken branches or not; each evaluation then records
+//! whether the condition held. Every Kani harness runs its body inside [`harness`], which fails
+//! with the messages of the covers its runs declared but never satisfied, and prints how often
+//! each was satisfied. The concrete drivers run their bodies inside [`check_covers`] or
 //! [`check_ids`] (or collect per worker thread with [`collect`] and merge with [`merge`]), which
-//! fail when a cover was evaluated but never hit. So a premise that no case of a driver's domain
-//! reaches fails the driver instead of passing vacuously.
+//! fail the same way. So a premise that no case of a harness or driver reaches fails it instead
+//! of passing vacuously. (What `cargo test` cannot see: a cover in a function that the
+//! harness could call but its runs never enter; Kani counts that one too.)
 //!
 //! `check!(condition, "ID: message", ..)` and `check_eq!(a, b, "ID: message", ..)` are
 //! `assert!` and `assert_eq!` that also record, under `cargo test`, the requirement IDs their
@@ -31,12 +39,15 @@ macro_rules! cover {
     };
 }
 
-/// Cover `$cond` with the message `$msg` (a string literal naming the requirement).
+/// Cover `$cond` with the message `$msg` (a string literal naming the requirement). Only in a
+/// function marked `#[covers]`: "cannot find value `__COVERS_DECLARED`" means the attribute is
+/// missing.
 #[cfg(not(kani))]
 macro_rules! cover {
-    ($cond:expr, $msg:literal) => {
+    ($cond:expr, $msg:literal) => {{
+        let _: () = __COVERS_DECLARED;
         $crate::cover::record($cond, $msg)
-    };
+    }};
 }
 
 /// `assert!`, recording the requirement IDs the message starts with when it is reached.
@@ -81,15 +92,19 @@ macro_rules! check_eq {
     };
 }
 
+pub(crate) use plc_timers_proofs_macros::covers;
 pub(crate) use {check, check_eq, cover};
 
-/// What a driver's body recorded: each cover evaluated with how often it held, and the
-/// requirement IDs whose assertions were reached.
+/// What a driver's body recorded: each cover declared or evaluated with how often it held, and
+/// the requirement IDs whose assertions were reached.
 #[cfg(not(kani))]
 #[derive(Debug, Default)]
 pub struct Hits {
-    /// Each cover evaluated: how often it held.
+    /// Each cover declared (by `#[covers]` on entry to its function) or evaluated: how often it
+    /// held.
     pub covers: BTreeMap<&'static str, u64>,
+    /// Each cover evaluated: how often.
+    pub evaluated: BTreeMap<&'static str, u64>,
     /// The IDs of the `check!`/`check_eq!` assertions reached.
     pub checked: BTreeSet<&'static str>,
 }
@@ -170,11 +185,49 @@ pub fn record(cond: bool, msg: &'static str) {
     HITS.with(|h| {
         if let Some(hits) = h.borrow_mut().as_mut() {
             *hits.covers.entry(msg).or_insert(0) += u64::from(cond);
+            *hits.evaluated.entry(msg).or_insert(0) += 1;
         }
     });
 }
 
-/// Runs `body` on this thread and returns what it recorded.
+/// The covers of one function marked `#[covers]` and the last collection they were declared
+/// into.
+#[cfg(not(kani))]
+pub struct Declared {
+    msgs: &'static [&'static str],
+    declared_in: AtomicU64,
+}
+
+#[cfg(not(kani))]
+impl Declared {
+    /// The covers of a function, by their messages.
+    pub const fn new(msgs: &'static [&'static str]) -> Declared {
+        Declared {
+            msgs,
+            declared_in: AtomicU64::new(0),
+        }
+    }
+
+    /// The function is entered: its covers go into this thread's collection, satisfied or not
+    /// (once per collection, as [`Site::reached`]).
+    pub fn enter(&self) {
+        let c = COLLECTION.with(Cell::get);
+        if c == 0 || self.declared_in.load(Ordering::Relaxed) == c {
+            return;
+        }
+        self.declared_in.store(c, Ordering::Relaxed);
+        HITS.with(|h| {
+            if let Some(hits) = h.borrow_mut().as_mut() {
+                for &msg in self.msgs {
+                    hits.covers.entry(msg).or_insert(0);
+                }
+            }
+        });
+    }
+}
+
+/// Runs `body` on this thread and returns what it recorded. Inside another collection (a
+/// harness around a driver's `check_ids`), the records also go into the outer one.
 #[cfg(not(kani))]
 pub fn collect<R>(body: impl FnOnce() -> R) -> (R, Hits) {
     let outer = HITS.with(|h| h.borrow_mut().replace(Hits::default()));
@@ -185,7 +238,24 @@ pub fn collect<R>(body: impl FnOnce() -> R) -> (R, Hits) {
     let hits = HITS
         .with(|h| std::mem::replace(&mut *h.borrow_mut(), outer))
         .unwrap_or_default();
+    HITS.with(|h| {
+        if let Some(outer) = h.borrow_mut().as_mut() {
+            add(outer, &hits);
+        }
+    });
     (r, hits)
+}
+
+/// Adds the records of `hits` to `into`.
+#[cfg(not(kani))]
+fn add(into: &mut Hits, hits: &Hits) {
+    for (&msg, &n) in &hits.covers {
+        *into.covers.entry(msg).or_insert(0) += n;
+    }
+    for (&msg, &n) in &hits.evaluated {
+        *into.evaluated.entry(msg).or_insert(0) += n;
+    }
+    into.checked.extend(&hits.checked);
 }
 
 /// Merges the records of several workers.
@@ -193,16 +263,13 @@ pub fn collect<R>(body: impl FnOnce() -> R) -> (R, Hits) {
 pub fn merge(all: impl IntoIterator<Item = Hits>) -> Hits {
     let mut merged = Hits::default();
     for hits in all {
-        for (msg, n) in hits.covers {
-            *merged.covers.entry(msg).or_insert(0) += n;
-        }
-        merged.checked.extend(hits.checked);
+        add(&mut merged, &hits);
     }
     merged
 }
 
-/// Fails when a cover of `hits` was evaluated but never true, or when none was evaluated at
-/// all; returns the hits for further checks.
+/// Fails when a cover of `hits` was declared or evaluated but never true, or when none was
+/// evaluated at all; returns the hits for further checks.
 #[cfg(not(kani))]
 pub fn require(hits: Hits) -> Hits {
     assert!(!hits.covers.is_empty(), "no cover was evaluated");
@@ -214,6 +281,47 @@ pub fn require(hits: Hits) -> Hits {
         .collect();
     assert!(missed.is_empty(), "covers never hit: {missed:#?}");
     hits
+}
+
+/// The body of the Kani harness `name` (`module::function`, as .ci/kani-harnesses lists it):
+/// runs `body`, prints each cover it declared with how often it was satisfied and evaluated
+/// (seen with `--nocapture`), and fails with the messages of those never satisfied, as the
+/// harness's Kani job would.
+#[cfg(not(kani))]
+pub fn harness<R>(name: &str, body: impl FnOnce() -> R) -> R {
+    // `module_path!()` of the test crate starts with its name.
+    let name = name.strip_prefix("proofs::").unwrap_or(name);
+    let (r, hits) = collect(body);
+    println!("{}", table(name, &hits));
+    let missed: Vec<&str> = hits
+        .covers
+        .iter()
+        .filter(|(_, &n)| n == 0)
+        .map(|(m, _)| *m)
+        .collect();
+    assert!(
+        missed.is_empty(),
+        "harness {name}: covers never satisfied: {missed:#?}"
+    );
+    r
+}
+
+/// Runs `body` (under Kani the harness is the proof: nothing is recorded).
+#[cfg(kani)]
+pub fn harness<R>(_name: &str, body: impl FnOnce() -> R) -> R {
+    body()
+}
+
+/// The covers of harness `name` with how often each was satisfied and evaluated, one line
+/// each after a heading line.
+#[cfg(not(kani))]
+pub fn table(name: &str, hits: &Hits) -> String {
+    let mut out = format!("covers of {name}: {}", hits.covers.len());
+    for (msg, n) in &hits.covers {
+        let evaluated = hits.evaluated.get(msg).copied().unwrap_or(0);
+        out.push_str(&format!("\n  {n:>9} of {evaluated:>9}  {msg}"));
+    }
+    out
 }
 
 /// Fails when one of `ids` had no assertion reached (no `check!`/`check_eq!` with its ID ran
@@ -271,8 +379,112 @@ pub fn check_only<R>(ids: &[&str], body: impl FnOnce() -> R) -> R {
             .into_iter()
             .filter(|(m, _)| ids.iter().any(|id| m.starts_with(id)))
             .collect(),
+        evaluated: hits.evaluated,
         checked: hits.checked,
     };
     require(mine);
     r
+}
+
+/// The per-harness check itself, on bodies with a dead cover, and the rule that every Kani
+/// harness runs in its own scope.
+#[cfg(all(test, not(kani)))]
+mod tests {
+    use super::{collect, covers, harness, table};
+
+    /// A body with a cover per branch, as a harness body that branches on its inputs.
+    #[covers]
+    fn by_kind(kind: u8) {
+        if kind == 0 {
+            cover!(true, "TEST-BRANCH-01: kind 0");
+        }
+        cover!(kind == 1, "TEST-KIND-01: kind 1");
+        cover!(kind > 5, "TEST-LARGE-01: a kind above 5");
+    }
+
+    /// A cover in a branch the harness's inputs never take is declared on entry and fails the
+    /// harness, although it is never evaluated.
+    #[test]
+    #[should_panic(
+        expected = "harness test::unreached_branch: covers never satisfied: [\n    \"TEST-BRANCH-01: kind 0\",\n    \"TEST-LARGE-01: a kind above 5\",\n]"
+    )]
+    fn a_cover_in_a_branch_never_taken_fails_its_harness() {
+        harness("test::unreached_branch", || (1..=5).for_each(by_kind));
+    }
+
+    /// A cover evaluated on every run but never true fails the harness.
+    #[test]
+    #[should_panic(
+        expected = "harness test::never_true: covers never satisfied: [\n    \"TEST-LARGE-01: a kind above 5\",\n]"
+    )]
+    fn a_cover_never_true_fails_its_harness() {
+        harness("test::never_true", || (0..=5).for_each(by_kind));
+    }
+
+    /// Every cover satisfied: the harness passes, and its table counts, per cover, the runs that
+    /// satisfied it and those that evaluated it (kinds 0..=7: kind 0 once in its branch, kind 1
+    /// once of 8, kinds 6 and 7 of 8).
+    #[test]
+    fn covers_all_satisfied_pass_and_are_counted_per_harness() {
+        harness("test::all", || (0..=7).for_each(by_kind));
+        let ((), hits) = collect(|| (0..=7).for_each(by_kind));
+        assert_eq!(
+            table("test::all", &hits),
+            "covers of test::all: 3\n\
+             \x20         1 of         1  TEST-BRANCH-01: kind 0\n\
+             \x20         1 of         8  TEST-KIND-01: kind 1\n\
+             \x20         2 of         8  TEST-LARGE-01: a kind above 5"
+        );
+    }
+
+    /// Two harnesses count apart: one that satisfies a cover does not help another that
+    /// does not (the counting per driver that hid the IEC per-kind harnesses' dead covers).
+    #[test]
+    #[should_panic(expected = "harness test::second: covers never satisfied")]
+    fn harnesses_count_apart() {
+        harness("test::first", || (0..=7).for_each(by_kind));
+        harness("test::second", || (1..=5).for_each(by_kind));
+    }
+
+    /// A scope inside a harness (a driver's `check_ids`) also records into the harness.
+    #[test]
+    #[should_panic(expected = "harness test::nested: covers never satisfied")]
+    fn a_nested_scope_records_into_its_harness() {
+        harness("test::nested", || {
+            let ((), inner) = collect(|| by_kind(3));
+            assert_eq!(inner.covers.len(), 3, "the inner scope has its own records");
+        });
+    }
+
+    /// Every function marked as a Kani harness in proofs/ runs its body in [`harness`], first
+    /// thing, so that `cargo test` checks its covers as its Kani job would.
+    #[test]
+    fn every_kani_harness_runs_in_its_own_scope() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/proofs");
+        let mut harnesses = 0;
+        for entry in std::fs::read_dir(dir).expect("proofs/") {
+            let path = entry.expect("an entry").path();
+            // This file names the attribute in the test itself.
+            if path.extension().is_none_or(|e| e != "rs") || path.ends_with("cover.rs") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).expect("a source file");
+            for (at, _) in text.match_indices("#[cfg_attr(kani, kani::proof") {
+                let rest = &text[at..];
+                let body = rest
+                    .find("\n")
+                    .and_then(|nl| rest[nl..].find("fn ").map(|f| nl + f))
+                    .and_then(|f| rest[f..].find('{').map(|b| &rest[f + b + 1..]))
+                    .expect("the harness's body");
+                assert!(
+                    body.trim_start().starts_with("crate::cover::harness("),
+                    "{}: the harness at byte {at} does not run in crate::cover::harness",
+                    path.display()
+                );
+                harnesses += 1;
+            }
+        }
+        // 26 marked functions, 48 harnesses once the harness macros have expanded.
+        assert!(harnesses >= 26, "only {harnesses} harnesses found");
+    }
 }

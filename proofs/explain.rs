@@ -30,8 +30,10 @@ use plc_timers::s5::{S5Input, S5Kind, S5State, S5TimerOps, S5TimerRef, TimerMemo
 use plc_timers::time::clock::ClockWord;
 use plc_timers::time::{CpuTime, Time, TimeBase};
 
-use crate::cover::{check, cover};
+use crate::cover::{check, cover, covers};
 use crate::iec::{all_states_u4, U4};
+#[cfg(not(kani))]
+use crate::s5::near_expiry;
 use crate::s5::{seen, S5Case};
 
 /// Soundness: every rule of `reported` satisfies `premise`.
@@ -169,6 +171,7 @@ fn s5_changes(c: &S5Case, rule: Rule, before: &S5State, after: &S5State) -> bool
 
 /// The S5 timer explanation, faithful, sound and complete for one case; and the memory area's
 /// explained operations faithful to the plain ones and to the reference.
+#[covers]
 pub fn prop_explain_s5(c: S5Case) -> bool {
     if !c.state.is_valid() {
         return false;
@@ -315,6 +318,7 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
 }
 
 /// One cover per S5 rule: reported somewhere in the domain.
+#[covers]
 fn s5_cover(rule: Rule, hit: bool) {
     match rule {
         Rule::S5TMR_TICK_01 => cover!(hit, "S5TMR-TICK-01 explained"),
@@ -404,16 +408,20 @@ macro_rules! explain_timer_harness {
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(80))]
         fn $name() {
-            bolero::check!()
-                .with_type::<S5Case>()
-                .with_iterations(2_000)
-                .for_each(|c| {
-                    let state = S5State {
-                        base: $base,
-                        ..c.state
-                    };
-                    prop_explain_s5(S5Case { state, ..*c });
-                });
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                bolero::check!()
+                    .with_type::<S5Case>()
+                    .with_iterations(2_000)
+                    .for_each(|c| {
+                        let state = S5State {
+                            base: $base,
+                            ..c.state
+                        };
+                        prop_explain_s5(S5Case { state, ..*c });
+                        #[cfg(not(kani))]
+                        prop_explain_s5(near_expiry(S5Case { state, ..*c }));
+                    });
+            });
         }
     };
 }
@@ -594,6 +602,7 @@ pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
     true
 }
 
+#[covers]
 fn iec_cover(rule: Rule, hit: bool) {
     match rule {
         Rule::IEC_START_01 => cover!(hit, "IEC-START-01 explained"),
@@ -665,22 +674,27 @@ fn exhaustive_explain_iec_u4() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(80))]
 fn kani_explain_iec() {
-    bolero::check!()
-        .with_type::<(IecState<u32>, IecKind, CpuTime, IecInput)>()
-        .with_iterations(20_000)
-        .for_each(|(st, kind, now, input)| {
-            let state = IecState {
-                pt: st.pt.min(i32::MAX as u32),
-                et: st.et.min(st.pt.min(i32::MAX as u32)),
-                ..*st
-            };
-            prop_explain_iec(IecCase {
-                state,
-                kind: *kind,
-                now: *now,
-                input: *input,
-            });
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_explain_iec)),
+        || {
+            bolero::check!()
+                .with_type::<(IecState<u32>, IecKind, CpuTime, IecInput)>()
+                .with_iterations(20_000)
+                .for_each(|(st, kind, now, input)| {
+                    let state = IecState {
+                        pt: st.pt.min(i32::MAX as u32),
+                        et: st.et.min(st.pt.min(i32::MAX as u32)),
+                        ..*st
+                    };
+                    prop_explain_iec(IecCase {
+                        state,
+                        kind: *kind,
+                        now: *now,
+                        input: *input,
+                    });
+                });
+        },
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -721,6 +735,7 @@ fn counter_outputs(kind: CounterKind) -> (usize, &'static [usize]) {
 }
 
 /// The IEC counter explanation, faithful, sound and complete for one call.
+#[covers]
 pub fn prop_explain_counter<T: CounterInt>(
     kind: CounterKind,
     st: CounterState<T>,
@@ -862,12 +877,19 @@ fn exhaustive_explain_counters_8bit() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(80))]
 fn kani_explain_counter() {
-    bolero::check!()
-        .with_type::<(CounterKind, CounterState<i32>, CounterInput<i32>)>()
-        .with_iterations(20_000)
-        .for_each(|(kind, st, input)| {
-            prop_explain_counter(*kind, *st, *input);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_explain_counter)),
+        || {
+            bolero::check!()
+                .with_type::<(CounterKind, CounterState<i32>, CounterInput<i32>)>()
+                .with_iterations(20_000)
+                .for_each(|(kind, st, input)| {
+                    prop_explain_counter(*kind, *st, *input);
+                    #[cfg(not(kani))]
+                    prop_explain_counter(*kind, crate::counter::at_limit(*st), *input);
+                });
+        },
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -908,6 +930,7 @@ fn s5c_premise(kind: S5CounterKind, st: &S5CounterState, i: &S5CounterInput, rul
 
 /// The S5 counter explanation, faithful, sound and complete for one call; and the counter
 /// memory area's explained operations faithful to the plain ones.
+#[covers]
 pub fn prop_explain_s5_counter(kind: S5CounterKind, st: S5CounterState, i: S5CounterInput) -> bool {
     let Some(start) = S5CounterRef::from_state(st) else {
         return false;
@@ -1098,10 +1121,17 @@ fn exhaustive_explain_s5_counters() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(80))]
 fn kani_explain_s5_counter() {
-    bolero::check!()
-        .with_type::<(S5CounterKind, S5CounterState, S5CounterInput)>()
-        .with_iterations(20_000)
-        .for_each(|(kind, st, input)| {
-            prop_explain_s5_counter(*kind, *st, *input);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_explain_s5_counter)),
+        || {
+            bolero::check!()
+                .with_type::<(S5CounterKind, S5CounterState, S5CounterInput)>()
+                .with_iterations(20_000)
+                .for_each(|(kind, st, input)| {
+                    prop_explain_s5_counter(*kind, *st, *input);
+                    #[cfg(not(kani))]
+                    prop_explain_s5_counter(*kind, crate::counter::s5_at_limit(*st), *input);
+                });
+        },
+    );
 }

@@ -750,7 +750,7 @@ proptest! {
 // structure and, for TON calls on the 32-bit clock, the TON bank.
 // ---------------------------------------------------------------------------------------------
 
-use crate::cover::cover;
+use crate::cover::{cover, covers};
 
 /// The implementations an operation runs through.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -911,8 +911,63 @@ fn iec_reachable<C: ClockWord>(st: &IecState<C>) -> bool {
         })
 }
 
-/// Every IEC rule on one operation through `imp`. Returns whether it was checked.
-pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> bool {
+/// The covers of the rules of one kind, chosen by type: a harness of one kind calls its kind's
+/// only, since Kani counts every cover in the code a harness can call, and a cover that needs
+/// another kind would be unreachable there (a runtime test of the kind would still leave it in
+/// the code). The covers of the rules of every kind stay in [`call_rules`].
+pub trait KindCovers {
+    /// TP-RETRIGGER-01's premise: a rising IN in the call where a TP pulse runs out.
+    fn tp_retrigger(_premise: bool) {}
+    /// TONR-RESUME-01's premise: a TONR resumes with time accumulated.
+    fn tonr_resume(_premise: bool) {}
+}
+
+/// TP's covers.
+pub struct TpCovers;
+/// TON's covers (its rules have none of their own).
+pub struct TonCovers;
+/// TOF's covers (its rules have none of their own).
+pub struct TofCovers;
+/// TONR's covers.
+pub struct TonrCovers;
+/// The covers of every kind, for a driver whose domain holds every kind.
+pub struct AllKindCovers;
+
+impl KindCovers for TpCovers {
+    fn tp_retrigger(premise: bool) {
+        cover_tp_retrigger(premise);
+    }
+}
+impl KindCovers for TonCovers {}
+impl KindCovers for TofCovers {}
+impl KindCovers for TonrCovers {
+    fn tonr_resume(premise: bool) {
+        cover_tonr_resume(premise);
+    }
+}
+impl KindCovers for AllKindCovers {
+    fn tp_retrigger(premise: bool) {
+        cover_tp_retrigger(premise);
+    }
+    fn tonr_resume(premise: bool) {
+        cover_tonr_resume(premise);
+    }
+}
+
+#[covers]
+fn cover_tp_retrigger(premise: bool) {
+    cover!(premise, "TP-RETRIGGER-01: rising IN as the pulse runs out");
+}
+
+#[covers]
+fn cover_tonr_resume(premise: bool) {
+    cover!(premise, "TONR-RESUME-01: resume with time accumulated");
+}
+
+/// Every IEC rule on one operation through `imp`, with the kind covers `K`. Returns whether it
+/// was checked.
+#[covers]
+pub fn check_iec_rules<C: ClockWord, K: KindCovers>(imp: IecImpl, st: IecState<C>, op: Op) -> bool {
     if !st.is_valid() {
         return false;
     }
@@ -938,7 +993,7 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
         "IEC-ET-RANGE-01: {imp:?}: PT is a non-negative TIME"
     );
     match op {
-        Op::Call(kind, now, i) => call_rules(imp, st, kind, now, i, post),
+        Op::Call(kind, now, i) => call_rules::<C, K>(imp, st, kind, now, i, post),
         Op::ReadQ(now) | Op::ReadEt(now) => {
             let expected = match st.kind {
                 Some(kind) => updated(st, now, kind),
@@ -1011,7 +1066,8 @@ pub fn check_iec_rules<C: ClockWord>(imp: IecImpl, st: IecState<C>, op: Op) -> b
     true
 }
 
-fn call_rules<C: ClockWord>(
+#[covers]
+fn call_rules<C: ClockWord, K: KindCovers>(
     imp: IecImpl,
     st: IecState<C>,
     kind: IecKind,
@@ -1037,6 +1093,9 @@ fn call_rules<C: ClockWord>(
         IecKind::Tp => rising && (!st.running || expired_now || !same_kind),
         IecKind::Tonr => false,
     };
+    // TONR has no starting edge: it starts (resumes) whenever IN = 1 and R = 0 on a stopped
+    // timer that has not run out (TONR-RESUME-01); with PT = 0 that call runs out (IEC-PT0-01).
+    let tonr_resume = kind == IecKind::Tonr && i.input && !i.reset && !st.running && !st.q;
     if start_edge && (kind != IecKind::Tp || same_kind || !st.running) {
         check_eq!(
             post.pt.to_u64(),
@@ -1067,7 +1126,10 @@ fn call_rules<C: ClockWord>(
             );
         }
     }
-    cover!(start_edge && p == 0, "IEC-PT0-01: a start with PT = 0");
+    cover!(
+        (start_edge || tonr_resume) && p == 0,
+        "IEC-PT0-01: a start with PT = 0"
+    );
     // IEC-EDGE-01: a stopped timer starts only on its starting edge (TONR: IN = 1, R = 0).
     if !st.running && post.running {
         let edge = match kind {
@@ -1080,7 +1142,20 @@ fn call_rules<C: ClockWord>(
             "IEC-EDGE-01: {imp:?}: {kind:?} started without its starting edge: {st:?} {i:?}"
         );
     }
-    if !iec_reachable(&st) {
+    let reachable = iec_reachable(&st);
+    // The kind covers, evaluated on every call (not in the kind's branch below), so that a
+    // harness given another kind's covers fails under `cargo test` as its Kani job would.
+    K::tp_retrigger(kind == IecKind::Tp && reachable && expired_now && rising);
+    K::tonr_resume(
+        kind == IecKind::Tonr
+            && reachable
+            && !i.reset
+            && i.input
+            && !st.running
+            && !st.q
+            && st.et > C::ZERO,
+    );
+    if !reachable {
         return;
     }
     // A running timer that the call keeps timing: the update (IEC-EXPIRY-01, IEC-WRAP-01).
@@ -1162,10 +1237,6 @@ fn call_rules<C: ClockWord>(
                     );
                 }
             }
-            cover!(
-                expired_now && rising,
-                "TP-RETRIGGER-01: rising IN as the pulse runs out"
-            );
         }
         IecKind::Ton => {
             if !i.input {
@@ -1228,11 +1299,13 @@ fn call_rules<C: ClockWord>(
                         "TONR-RESUME-01: {imp:?}: an accumulated ET at or above the new PT has run out"
                     );
                 }
+                if p == 0 {
+                    check!(
+                        !post.running && post.q && post.et == C::ZERO,
+                        "IEC-PT0-01: {imp:?}: PT = 0: TONR's resume runs out in that call (Q = 1, ET = 0): {st:?} {i:?} -> {post:?}"
+                    );
+                }
             }
-            cover!(
-                i.input && !st.running && !st.q && st.et > C::ZERO,
-                "TONR-RESUME-01: resume with time accumulated"
-            );
         }
     }
     if !continues && st.running && same_kind {
@@ -1256,7 +1329,8 @@ fn call_rules<C: ClockWord>(
 /// Every IEC rule through every implementation (the harness body), and each implementation's
 /// step equal to the reference's (IEC-STRUCT-01 for the structure and its array forms
 /// `ton_for_arrays` and `ton_array`, IEC-BANK-01 for the bank's TON, against `IecTimerRef`).
-pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
+/// `K`: the kind covers of the caller's domain ([`KindCovers`]).
+pub fn prop_iec_rules<C: ClockWord, K: KindCovers>(st: IecState<C>, op: Op) -> bool {
     let mut checked = false;
     let reference = st
         .is_valid()
@@ -1269,7 +1343,7 @@ pub fn prop_iec_rules<C: ClockWord>(st: IecState<C>, op: Op) -> bool {
         IecImpl::TonForArrays,
         IecImpl::TonArray,
     ] {
-        checked |= check_iec_rules(imp, st, op);
+        checked |= check_iec_rules::<C, K>(imp, st, op);
         if let (Some(r), Some(x)) = (
             reference,
             st.is_valid().then(|| iec_run(imp, st, op)).flatten(),
@@ -1355,7 +1429,7 @@ fn exhaustive_u4_iec_rules() {
                         let mut n = 0u64;
                         for &st in part {
                             for &op in ops {
-                                n += u64::from(prop_iec_rules(st, op));
+                                n += u64::from(prop_iec_rules::<U4, AllKindCovers>(st, op));
                             }
                         }
                         n
@@ -1424,7 +1498,7 @@ fn exhaustive_u8_wrap_rules() {
                             CpuTime::from_millis(now),
                             IecInput::new(input, Time::from_millis(9)),
                         );
-                        check!(prop_iec_rules(st, op));
+                        check!(prop_iec_rules::<u8, AllKindCovers>(st, op));
                     }
                 }
             }
@@ -1432,8 +1506,47 @@ fn exhaustive_u8_wrap_rules() {
     });
 }
 
+/// `op` moved to `before` ms before PT (at least 0 ms after START) when it is a call or a read:
+/// with `before` 0 and 1, the instants at which a running timer `st` expires or is about to,
+/// which random 32-bit times almost never reach. Harnesses run them beside each random case
+/// under `cargo test` (Kani covers them with the rest).
+pub fn near_expiry(st: IecState<u32>, op: Op, before: u64) -> Op {
+    let at = |_: CpuTime| {
+        CpuTime::from_millis(u64::from(st.start) + u64::from(st.pt) - before.min(u64::from(st.pt)))
+    };
+    match op {
+        Op::Call(kind, now, input) => Op::Call(kind, at(now), input),
+        Op::ReadQ(now) => Op::ReadQ(at(now)),
+        Op::ReadEt(now) => Op::ReadEt(at(now)),
+        other => other,
+    }
+}
+
+/// The body of the per-kind harnesses: `st` and `op` made of `kind` (a state of another kind
+/// becomes one of this kind, a call one of this kind; PT and ET within the TIME range), every
+/// IEC rule with the kind covers `K`, the structure's layout; under `cargo test` also the same
+/// case at PT and one ms before it ([`near_expiry`]).
+pub fn iec_rules_case<K: KindCovers>(kind: IecKind, st: IecState<u32>, op: Op) {
+    let st = IecState {
+        kind: st.kind.map(|_| kind),
+        pt: st.pt.min(i32::MAX as u32),
+        et: st.et.min(st.pt.min(i32::MAX as u32)),
+        ..st
+    };
+    let op = match op {
+        Op::Call(_, now, input) => Op::Call(kind, now, input),
+        other => other,
+    };
+    prop_iec_rules::<u32, K>(st, op);
+    prop_struct(st);
+    #[cfg(not(kani))]
+    for before in [0, 1] {
+        prop_iec_rules::<u32, K>(st, near_expiry(st, op, before));
+    }
+}
+
 macro_rules! iec_rules_harness {
-    ($name:ident, $kind:expr) => {
+    ($name:ident, $kind:expr, $covers:ty) => {
         /// Every IEC rule for one kind on the 32-bit clock (`prop_iec_rules`: the reference, the
         /// structure, its array forms and, for TON, a one-timer bank; the metamorphic reruns)
         /// and the structure's layout. Symbolic: the state (any valid one, of this kind or none,
@@ -1441,41 +1554,47 @@ macro_rules! iec_rules_harness {
         /// any IN and PT, a read of Q or ET at any time, RT, a PT coil with any TIME,
         /// RUN-STOP-RUN). `#[kani::unwind(17)]`: the TON bank's scan runs its group code on a
         /// padded copy of 16 timers, and so does `ton_array` (loops of 16 iterations and the exit, the
-        /// largest); the loop over the 5 implementations is shorter. The kind is a constant, so each harness holds
-        /// one kind's branches only.
+        /// largest); the loop over the 5 implementations is shorter. The kind is a constant, so each harness
+        /// holds one kind's branches only, and its kind's covers only ([`KindCovers`]).
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(17))]
         fn $name() {
-            bolero::check!()
-                .with_type::<(IecState<u32>, Op)>()
-                .with_iterations(5_000)
-                .for_each(|(st, op)| {
-                    let kind: IecKind = $kind;
-                    let st = IecState {
-                        kind: st.kind.map(|_| kind),
-                        pt: st.pt.min(i32::MAX as u32),
-                        et: st.et.min(st.pt.min(i32::MAX as u32)),
-                        ..*st
-                    };
-                    let op = match *op {
-                        Op::Call(_, now, input) => Op::Call(kind, now, input),
-                        other => other,
-                    };
-                    prop_iec_rules(st, op);
-                    prop_struct(st);
-                });
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                bolero::check!()
+                    .with_type::<(IecState<u32>, Op)>()
+                    .with_iterations(5_000)
+                    .for_each(|&(st, op)| iec_rules_case::<$covers>($kind, st, op));
+            });
         }
     };
 }
 
-iec_rules_harness!(kani_iec_tp_rules, IecKind::Tp);
-iec_rules_harness!(kani_iec_ton_rules, IecKind::Ton);
-iec_rules_harness!(kani_iec_tof_rules, IecKind::Tof);
-iec_rules_harness!(kani_iec_tonr_rules, IecKind::Tonr);
+iec_rules_harness!(kani_iec_tp_rules, IecKind::Tp, TpCovers);
+iec_rules_harness!(kani_iec_ton_rules, IecKind::Ton, TonCovers);
+iec_rules_harness!(kani_iec_tof_rules, IecKind::Tof, TofCovers);
+iec_rules_harness!(kani_iec_tonr_rules, IecKind::Tonr, TonrCovers);
+
+/// Issue 39's case: the TON harness's body with TP's covers (as when every kind's harness held
+/// every kind's covers) fails its harness with TP-RETRIGGER-01's cover, which no TON call
+/// satisfies.
+#[cfg(not(kani))]
+#[test]
+#[should_panic(
+    expected = "covers never satisfied: [\n    \"TP-RETRIGGER-01: rising IN as the pulse runs out\",\n]"
+)]
+fn another_kinds_cover_fails_the_harness() {
+    crate::cover::harness("iec::ton_with_tp_covers", || {
+        bolero::check!()
+            .with_type::<(IecState<u32>, Op)>()
+            .with_iterations(5_000)
+            .for_each(|&(st, op)| iec_rules_case::<TpCovers>(IecKind::Ton, st, op));
+    });
+}
 
 /// IEC-WRAP-01 over gaps on the 32-bit clock: a TON started at `t0` and updated `gap` ms later
 /// shows ET = min(gap, PT) for every gap below 2^32 ms (2^31 and more included), and a gap of
 /// 2^32 ms or more aliases to the gap 2^32 ms shorter.
+#[covers]
 pub fn prop_wrap_gap(t0: u64, gap: u64, pt: u32) {
     let pt = Time::from_millis(i32::try_from(pt >> 1).expect("31 bits"));
     let (t0, gap) = (CpuTime::from_millis(t0 >> 2), gap >> 2);
@@ -1505,13 +1624,18 @@ pub fn prop_wrap_gap(t0: u64, gap: u64, pt: u32) {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(3))]
 fn kani_wrap_gap() {
-    bolero::check!()
-        .with_type::<(u64, u64, u32)>()
-        .with_iterations(20_000)
-        .for_each(|&(t0, gap, pt)| {
-            prop_wrap_gap(t0, gap >> 28, pt);
-            prop_wrap_gap(t0, gap, pt);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_wrap_gap)),
+        || {
+            bolero::check!()
+                .with_type::<(u64, u64, u32)>()
+                .with_iterations(20_000)
+                .for_each(|&(t0, gap, pt)| {
+                    prop_wrap_gap(t0, gap >> 28, pt);
+                    prop_wrap_gap(t0, gap, pt);
+                });
+        },
+    );
 }
 
 /// IEC-WRAP-01 at the boundaries: gaps 2^31 - 1, 2^31, 2^32 - 1 are exact, 2^32 and 2^32 + 5
@@ -1544,10 +1668,15 @@ fn wrap_gap_boundaries() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_sequence_equivalence() {
-    bolero::check!()
-        .with_type::<[Op; 3]>()
-        .with_iterations(20_000)
-        .for_each(|ops| prop_sequence_equivalence::<u32>(ops));
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_sequence_equivalence)),
+        || {
+            bolero::check!()
+                .with_type::<[Op; 3]>()
+                .with_iterations(20_000)
+                .for_each(|ops| prop_sequence_equivalence::<u32>(ops));
+        },
+    );
 }
 
 /// IEC-STRUCT-01 one step on the 32-bit clock. Symbolic: the state (PT and ET within the TIME
@@ -1555,23 +1684,28 @@ fn kani_sequence_equivalence() {
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
-    crate::cover::check_ids(&["IEC-STRUCT-01"], || {
-        bolero::check!()
-            .with_type::<(IecState<u32>, Op)>()
-            .with_iterations(20_000)
-            .for_each(|&(st, op)| {
-                let st = IecState {
-                    pt: st.pt.min(i32::MAX as u32),
-                    et: st.et.min(st.pt.min(i32::MAX as u32)),
-                    ..st
-                };
-                prop_step_equivalence(st, op);
-                prop_invariants(st, op);
-                if let Op::Call(kind, now, input) = op {
-                    prop_table_8_20(st, kind, now, input, Time::from_millis(7));
-                }
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_step_equivalence)),
+        || {
+            crate::cover::check_ids(&["IEC-STRUCT-01"], || {
+                bolero::check!()
+                    .with_type::<(IecState<u32>, Op)>()
+                    .with_iterations(20_000)
+                    .for_each(|&(st, op)| {
+                        let st = IecState {
+                            pt: st.pt.min(i32::MAX as u32),
+                            et: st.et.min(st.pt.min(i32::MAX as u32)),
+                            ..st
+                        };
+                        prop_step_equivalence(st, op);
+                        prop_invariants(st, op);
+                        if let Op::Call(kind, now, input) = op {
+                            prop_table_8_20(st, kind, now, input, Time::from_millis(7));
+                        }
+                    });
             });
-    });
+        },
+    );
 }
 
 /// IEC-STRUCT-01 (the array form): `ton_array` on 2 structures over 3 scans against 2
@@ -1582,15 +1716,20 @@ fn kani_step_equivalence() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_array() {
-    crate::cover::check_ids(&["IEC-STRUCT-01"], || {
-        bolero::check!()
-            .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
-            .with_iterations(20_000)
-            .for_each(|(start, steps, inputs, pts)| {
-                let steps = steps.map(u64::from);
-                prop_ton_array::<2>(u64::from(*start), &steps, inputs, pts);
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ton_array)),
+        || {
+            crate::cover::check_ids(&["IEC-STRUCT-01"], || {
+                bolero::check!()
+                    .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
+                    .with_iterations(20_000)
+                    .for_each(|(start, steps, inputs, pts)| {
+                        let steps = steps.map(u64::from);
+                        prop_ton_array::<2>(u64::from(*start), &steps, inputs, pts);
+                    });
             });
-    });
+        },
+    );
 }
 
 /// IEC-BANK-01: a bank of 2 TONs over 3 scans against 2 reference TONs. Symbolic: the start
@@ -1602,13 +1741,18 @@ fn kani_ton_array() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_bank() {
-    crate::cover::check_ids(&["IEC-BANK-01"], || {
-        bolero::check!()
-            .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
-            .with_iterations(20_000)
-            .for_each(|(start, steps, inputs, pts)| {
-                let steps = steps.map(u64::from);
-                prop_ton_bank::<2>(u64::from(*start), &steps, inputs, pts);
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ton_bank)),
+        || {
+            crate::cover::check_ids(&["IEC-BANK-01"], || {
+                bolero::check!()
+                    .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
+                    .with_iterations(20_000)
+                    .for_each(|(start, steps, inputs, pts)| {
+                        let steps = steps.map(u64::from);
+                        prop_ton_bank::<2>(u64::from(*start), &steps, inputs, pts);
+                    });
             });
-    });
+        },
+    );
 }

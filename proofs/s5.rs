@@ -608,7 +608,7 @@ fn exhaustive_area_tick_per_base() {
 // LC, A) and, outside Kani, an `S5Timer` and an area box called at a time that gives the ticks.
 // ---------------------------------------------------------------------------------------------
 
-use crate::cover::cover;
+use crate::cover::{cover, covers};
 
 /// One step of the S5 box: the kind, the state before, the OS ticks of the timer's base since
 /// its previous execution, and the inputs.
@@ -622,6 +622,40 @@ pub struct S5Case {
     pub ticks: u64,
     /// S, R, FR, TV.
     pub input: S5Input,
+}
+
+/// `c` moved near the end of its time: at most 3 ticks and a value below 4 (still valid). A
+/// case of every harness's domain, which random `u64` tick counts and values up to 999 almost
+/// never reach: a running timer that a few ticks leave running or run out exactly. Harnesses run
+/// it beside each random case under `cargo test` (Kani covers it with the rest).
+pub fn near_expiry(c: S5Case) -> S5Case {
+    S5Case {
+        ticks: c.ticks % 4,
+        state: S5State {
+            value: c.state.value % 4,
+            ..c.state
+        },
+        ..c
+    }
+}
+
+/// `c` at the top of the range: value 999 in the 10 s base, no tick, TV = 9 990 s (a valid state
+/// whatever else `c` holds). A case of every harness's domain that random values seldom reach
+/// (one TV in 4 000); run beside each random case under `cargo test`, as [`near_expiry`].
+pub fn at_top(c: S5Case) -> S5Case {
+    S5Case {
+        ticks: 0,
+        state: S5State {
+            value: 999,
+            base: TimeBase::S10,
+            ..c.state
+        },
+        input: S5Input {
+            tv: S5Time::MAX,
+            ..c.input
+        },
+        ..c
+    }
 }
 
 /// Whether the kind is an on-delay (written here from LAD manual §9.5-9.6, not taken from the
@@ -802,6 +836,7 @@ pub fn run(imp: S5Impl, c: S5Case) -> (S5State, S5Output) {
 /// S5TMR-TICK-01 and S5TMR-EXPIRE-01 on the OS tick alone, in every implementation that has
 /// one (the reference's `tick`, the word's `tick`, the area's per-base `tick`), against the
 /// closed form [`ticked`].
+#[covers]
 pub fn prop_tick(state: S5State, n: u64) -> bool {
     if !state.is_valid() {
         return false;
@@ -935,6 +970,7 @@ fn reachable(c: &S5Case) -> bool {
 }
 
 /// Every S5 rule on one step through `imp`. Returns whether the step was checked.
+#[covers]
 pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
     if !c.state.is_valid() {
         return false;
@@ -1093,6 +1129,7 @@ pub fn check_s5_rules(imp: S5Impl, c: S5Case) -> bool {
 /// valid three-digit form of BI with the base in bits 13-12 and bits 15-14 zero; the duration
 /// the BCD word shows (its digits times the base its bits 13-12 name) is the state's; the value
 /// and base come from the state before or from the TV (so at most 9 990 s, 999 units of 10 s).
+#[covers]
 fn rule_range(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
     check!(
         post.value <= 999,
@@ -1153,6 +1190,7 @@ fn rule_range(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
 
 /// S5TMR-R-01: R = 1 leaves the timer stopped, value and base 0, Q = 0, for every kind, running
 /// or not; the S memory still takes S. S5TMR-LOAD-01: after R, L and LC read 0.
+#[covers]
 fn rule_r(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
     if !c.input.r {
         return;
@@ -1179,6 +1217,7 @@ fn rule_r(imp: S5Impl, c: S5Case, post: &S5State, out: &S5Output) {
 
 /// S5TMR-EDGE-01: without its start signal (a change of S in the kind's direction, against the
 /// memory as FR leaves it) no timer starts or reloads, and the base changes only by R.
+#[covers]
 fn rule_edge(imp: S5Impl, c: S5Case, post: &S5State) {
     if c.starts() {
         return;
@@ -1199,6 +1238,7 @@ fn rule_edge(imp: S5Impl, c: S5Case, post: &S5State) {
 
 /// S5TMR-ZERO-01: a timer started with the value 0 stays active in the starting execution and
 /// is found run out at its next execution, even with no tick.
+#[covers]
 fn rule_zero(imp: S5Impl, c: S5Case, post: &S5State) {
     if c.input.r {
         return;
@@ -1275,6 +1315,7 @@ fn tick_through(imp: S5Impl, state: S5State, n: u64) -> S5State {
 /// from the state with the memory cleared and FR already 1); with S = 1 the kind's start sees a
 /// rising edge and restarts with TV (S_PULSE too, even while it runs); with S = 0 nothing
 /// starts. FR held at 1, or falling, does nothing.
+#[covers]
 fn rule_fr(imp: S5Impl, c: S5Case, post: &S5State) {
     let i = c.input;
     let st = c.state;
@@ -1455,13 +1496,23 @@ fn exhaustive_s5_rules() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_s5_rules() {
-    bolero::check!()
-        .with_type::<S5Case>()
-        .with_iterations(20_000)
-        .for_each(|c| {
-            prop_s5_rules(*c);
-            prop_tick(c.state, c.ticks);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_s5_rules)),
+        || {
+            bolero::check!()
+                .with_type::<S5Case>()
+                .with_iterations(20_000)
+                .for_each(|&c| {
+                    prop_s5_rules(c);
+                    prop_tick(c.state, c.ticks);
+                    #[cfg(not(kani))]
+                    for edge in [near_expiry(c), at_top(c)] {
+                        prop_s5_rules(edge);
+                        prop_tick(edge.state, edge.ticks);
+                    }
+                });
+        },
+    );
 }
 
 /// S5-EQUIV-01 for every state, tick count and input. Symbolic: the kind, the state, the tick
@@ -1469,14 +1520,19 @@ fn kani_s5_rules() {
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
-    bolero::check!()
-        .with_type::<S5Case>()
-        .with_iterations(20_000)
-        .for_each(|c| {
-            prop_step_equivalence(c.kind, c.state, c.ticks, c.input);
-            prop_invariants(c.kind, c.state, c.ticks, c.input);
-            prop_kind_rules(c.kind, c.state, c.ticks, c.input);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_step_equivalence)),
+        || {
+            bolero::check!()
+                .with_type::<S5Case>()
+                .with_iterations(20_000)
+                .for_each(|c| {
+                    prop_step_equivalence(c.kind, c.state, c.ticks, c.input);
+                    prop_invariants(c.kind, c.state, c.ticks, c.input);
+                    prop_kind_rules(c.kind, c.state, c.ticks, c.input);
+                });
+        },
+    );
 }
 
 /// S5-EQUIV-01 on the bits of a word: valid exactly when its state is. Symbolic: the 32 bits
@@ -1484,13 +1540,18 @@ fn kani_step_equivalence() {
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_cell_word() {
-    bolero::check!()
-        .with_type::<u32>()
-        .with_iterations(20_000)
-        .for_each(|&w| {
-            prop_cell_word(w & 0x001F_FFFF);
-            prop_cell_word(w);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_cell_word)),
+        || {
+            bolero::check!()
+                .with_type::<u32>()
+                .with_iterations(20_000)
+                .for_each(|&w| {
+                    prop_cell_word(w & 0x001F_FFFF);
+                    prop_cell_word(w);
+                });
+        },
+    );
 }
 
 /// S5-AREA-01 on a two-timer area. Symbolic: both timers' states (any, invalid ones skipped),
@@ -1501,12 +1562,17 @@ fn kani_cell_word() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(33))]
 fn kani_area_tick() {
-    bolero::check!()
-        .with_type::<([S5State; 2], TimeBase, u64)>()
-        .with_iterations(20_000)
-        .for_each(|&(states, base, n)| {
-            prop_area_tick(states, base, n);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_area_tick)),
+        || {
+            bolero::check!()
+                .with_type::<([S5State; 2], TimeBase, u64)>()
+                .with_iterations(20_000)
+                .for_each(|&(states, base, n)| {
+                    prop_area_tick(states, base, n);
+                });
+        },
+    );
 }
 
 /// `S5Timer::call` = `S5TimerRef::call` at any time after the previous execution, one harness
@@ -1542,10 +1608,12 @@ macro_rules! timer_call_harness {
         #[test]
         #[cfg_attr(kani, kani::proof, kani::solver(kissat))]
         fn $name() {
-            bolero::check!()
-                .with_type::<(S5Case, u32, u32)>()
-                .with_iterations(5_000)
-                .for_each(|&(c, last, dt)| prop_timer_call(c, $base, last, dt % 200_000));
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                bolero::check!()
+                    .with_type::<(S5Case, u32, u32)>()
+                    .with_iterations(5_000)
+                    .for_each(|&(c, last, dt)| prop_timer_call(c, $base, last, dt % 200_000));
+            });
         }
     };
 }
@@ -1611,10 +1679,14 @@ macro_rules! advance_to_harness {
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(33), kani::solver(kissat))]
         fn $name() {
-            bolero::check!()
-                .with_type::<([S5State; 3], u32, u32)>()
-                .with_iterations(5_000)
-                .for_each(|&(states, from, dt)| prop_advance_to(states, $base, from, dt % 100_000));
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                bolero::check!()
+                    .with_type::<([S5State; 3], u32, u32)>()
+                    .with_iterations(5_000)
+                    .for_each(|&(states, from, dt)| {
+                        prop_advance_to(states, $base, from, dt % 100_000)
+                    });
+            });
         }
     };
 }
@@ -1637,27 +1709,29 @@ macro_rules! sequence_harness {
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(33), kani::solver(kissat))]
         fn $name() {
-            const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
-            let base: TimeBase = $base;
-            bolero::check!()
-                .with_type::<(S5Kind, [(u8, bool, bool, bool, u16); 3])>()
-                .with_iterations(5_000)
-                .for_each(|&(kind, steps)| {
-                    let steps = steps.map(|(d, s, r, fr, units)| {
-                        let input = S5Input {
-                            s,
-                            r: r && base == TimeBase::Ms10,
-                            fr,
-                            tv: S5Time::new(units % 1_000, base).expect("at most 999 units"),
+            crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
+                const DT: [u64; 8] = [0, 1, 9, 10, 11, 1_000, 10_000, 99_999];
+                let base: TimeBase = $base;
+                bolero::check!()
+                    .with_type::<(S5Kind, [(u8, bool, bool, bool, u16); 3])>()
+                    .with_iterations(5_000)
+                    .for_each(|&(kind, steps)| {
+                        let steps = steps.map(|(d, s, r, fr, units)| {
+                            let input = S5Input {
+                                s,
+                                r: r && base == TimeBase::Ms10,
+                                fr,
+                                tv: S5Time::new(units % 1_000, base).expect("at most 999 units"),
+                            };
+                            (DT[usize::from(d) % DT.len()], input)
+                        });
+                        let initial = S5State {
+                            base,
+                            ..S5State::RESET
                         };
-                        (DT[usize::from(d) % DT.len()], input)
+                        prop_sequence_equivalence_from(kind, initial, &steps);
                     });
-                    let initial = S5State {
-                        base,
-                        ..S5State::RESET
-                    };
-                    prop_sequence_equivalence_from(kind, initial, &steps);
-                });
+            });
         }
     };
 }

@@ -638,13 +638,18 @@ fn time_range_ends() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_word_decode() {
-    bolero::check!()
-        .with_type::<u16>()
-        .with_iterations(20_000)
-        .for_each(|&w| {
-            prop_word_decode(w);
-            prop_bcd3(w);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_word_decode)),
+        || {
+            bolero::check!()
+                .with_type::<u16>()
+                .with_iterations(20_000)
+                .for_each(|&w| {
+                    prop_word_decode(w);
+                    prop_bcd3(w);
+                });
+        },
+    );
 }
 
 /// S5T-AUTO-BASE-01 and S5T-RANGE-01 for every duration (`from_millis` divides by the four
@@ -653,23 +658,33 @@ fn kani_word_decode() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(5))]
 fn kani_from_millis() {
-    bolero::check!()
-        .with_type::<(u32, S5Time)>()
-        .with_iterations(20_000)
-        .for_each(|&(ms, t)| {
-            prop_from_millis(u64::from(ms));
-            prop_auto_encoding(t);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_from_millis)),
+        || {
+            bolero::check!()
+                .with_type::<(u32, S5Time)>()
+                .with_iterations(20_000)
+                .for_each(|&(ms, t)| {
+                    prop_from_millis(u64::from(ms));
+                    prop_auto_encoding(t);
+                });
+        },
+    );
 }
 
 /// TIME-ARITH-01 and TIME-RANGE-01 for every pair. Symbolic: two `i32` durations. No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_time_arith() {
-    bolero::check!()
-        .with_type::<(i32, i32)>()
-        .with_iterations(20_000)
-        .for_each(|&(a, b)| prop_time_arith(a, b));
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_time_arith)),
+        || {
+            bolero::check!()
+                .with_type::<(i32, i32)>()
+                .with_iterations(20_000)
+                .for_each(|&(a, b)| prop_time_arith(a, b));
+        },
+    );
 }
 
 /// The literal alphabet: every byte the parsers treat specially, plus one of each other class.
@@ -695,15 +710,20 @@ pub fn prop_parse_bytes(bytes: &[u8]) {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(14))]
 fn kani_parse_12_bytes() {
-    bolero::check!()
-        .with_type::<([u8; 12], u8)>()
-        .with_iterations(50_000)
-        .for_each(|(bytes, len)| {
-            let len = usize::from(*len) % 13;
-            #[cfg(not(kani))]
-            let bytes = bytes.map(|b| LITERAL_BYTES[usize::from(b) % LITERAL_BYTES.len()]);
-            prop_parse_bytes(&bytes[..len]);
-        });
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_parse_12_bytes)),
+        || {
+            bolero::check!()
+                .with_type::<([u8; 12], u8)>()
+                .with_iterations(50_000)
+                .for_each(|(bytes, len)| {
+                    let len = usize::from(*len) % 13;
+                    #[cfg(not(kani))]
+                    let bytes = bytes.map(|b| LITERAL_BYTES[usize::from(b) % LITERAL_BYTES.len()]);
+                    prop_parse_bytes(&bytes[..len]);
+                });
+        },
+    );
 }
 
 /// S5T-LIT-01, S5T-LIT-02 by grammar: every literal `S5T#` + up to 8 tokens from a small

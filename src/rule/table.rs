@@ -87,7 +87,7 @@ pub enum Rule {
     IEC_EXPIRY_01,
     /// IEC-ET-RANGE-01 (`spec/requirements/iec.toml`): 0 \<= ET \<= PT always; PT is a non-negative TIME; a negative PT is taken as 0 when the instruction executes.
     IEC_ET_RANGE_01,
-    /// IEC-PT0-01 (`spec/requirements/iec.toml`): PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.
+    /// IEC-PT0-01 (`spec/requirements/iec.toml`): PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, TOF's Q falls in the call of the falling edge, and TONR, which has no starting edge, runs out in the call that resumes it (TONR-RESUME-01: IN = 1, R = 0, stopped and not run out) with Q = 1 and ET = 0.
     IEC_PT0_01,
     /// IEC-WRAP-01 (`spec/requirements/iec.toml`): Elapsed time is computed as now - START modulo 2^32 on the free-running CPU millisecond clock: a timer started before the clock wraps expires correctly after it, and any gap between two updates shorter than 2^32 ms (about 49.7 days) gives the exact elapsed time, gaps of 2^31 ms and more included. A gap of 2^32 ms or more is indistinguishable from a gap 2^32 ms shorter, as on the CPU.
     IEC_WRAP_01,
@@ -410,7 +410,7 @@ impl Rule {
             Rule::IEC_PT_LATCH_01 => "While a timer runs, a change of PT at the box has no effect: the preset is latched at the start (TONR: when it resumes).",
             Rule::IEC_EXPIRY_01 => "Expiry is at ET >= PT: ET stops at PT; TON's and TONR's Q rise in the update where ET reaches PT; TP's Q is 1 only while ET < PT; TOF's Q falls when ET reaches PT.",
             Rule::IEC_ET_RANGE_01 => "0 <= ET <= PT always; PT is a non-negative TIME; a negative PT is taken as 0 when the instruction executes.",
-            Rule::IEC_PT0_01 => "PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.",
+            Rule::IEC_PT0_01 => "PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, TOF's Q falls in the call of the falling edge, and TONR, which has no starting edge, runs out in the call that resumes it (TONR-RESUME-01: IN = 1, R = 0, stopped and not run out) with Q = 1 and ET = 0.",
             Rule::IEC_WRAP_01 => "Elapsed time is computed as now - START modulo 2^32 on the free-running CPU millisecond clock: a timer started before the clock wraps expires correctly after it, and any gap between two updates shorter than 2^32 ms (about 49.7 days) gives the exact elapsed time, gaps of 2^31 ms and more included. A gap of 2^32 ms or more is indistinguishable from a gap 2^32 ms shorter, as on the CPU.",
             Rule::IEC_ACCESS_01 => "A timer is updated when and only when its instruction executes or an instruction reads the structure's Q or ELAPSED member; a read performs the update first.",
             Rule::TP_IN_01 => "TP: a rising IN starts a pulse of PT when none runs; changing IN while it runs has no effect; after the pulse ET stays at PT while IN = 1 and returns to 0 when IN = 0.",
