@@ -5,7 +5,7 @@
 
 use crate::cover::{check, check_eq};
 #[cfg(not(kani))]
-use crate::cover::{check_ids, cover};
+use crate::cover::{check_ids, cover, covers};
 
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef};
@@ -87,6 +87,7 @@ fn some_states() -> impl Iterator<Item = S5State> {
 /// and one of each base.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_tv_latched() {
     let tvs: Vec<S5Time> = [0x0000u16, 0x0001, 0x0999, 0x1500, 0x2001, 0x3999]
         .into_iter()
@@ -160,6 +161,7 @@ pub fn prop_tv_word_at_the_box(word: u16) -> bool {
 /// Exhaustive over every 16-bit word.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_tv_words_at_the_box() {
     let valid = check_ids(&["S5TMR-TVBCD-01"], || {
         (0..=u16::MAX)
@@ -225,6 +227,7 @@ pub fn prop_shared_structure(k1: IecKind, a: bool, k2: IecKind, b: bool) -> bool
 /// Exhaustive over every pair of instructions and every pair of IN values.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_shared_structure() {
     check_ids(&["IEC-SHARE-01"], || {
         for k1 in IecKind::ALL {
@@ -287,6 +290,7 @@ pub fn prop_below_resolution(ms: u64) -> bool {
 /// Exhaustive over every millisecond from 0 to 9 990 s.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_below_resolution() {
     check_ids(&["S5T-RES-01"], || {
         for ms in 0..=9_990_000u64 {
