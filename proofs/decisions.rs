@@ -1,14 +1,18 @@
-//! Properties of the rules added by the decision register (`spec/decisions.md`, R14-R16 and
+//! Properties of the rules added by the decision register (`spec/decisions.md`, R14-R17 and
 //! R10): TV latched at the start, no non-BCD TV at the box, several instructions on one
-//! IEC_TIMER, S5TIME below the resolution of its base. Each oracle is written from the rule's
+//! IEC_TIMER, S5TIME below the resolution of its base, S5 timers and counters across STOP. Each oracle is written from the rule's
 //! text, independently of both implementations; each driver names its rule in `check_ids`.
 
 use crate::cover::{check, check_eq};
 #[cfg(not(kani))]
 use crate::cover::{check_ids, cover, covers};
 
+use plc_timers::counter::s5::{
+    CounterMemory, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
+    S5CounterState,
+};
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef};
+use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerMemory};
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 
 use crate::s5::start_signal;
@@ -303,6 +307,283 @@ fn exhaustive_below_resolution() {
                 cut && ms >= 10,
                 "S5T-RES-01: a remainder below the base cut off"
             );
+        }
+    });
+}
+
+/// The multiples of `base` in `(from, to]`, stepped through one by one: the ticks of that base
+/// in the interval (an oracle of its own, not the crate's tick count).
+fn multiples_in(from: u64, to: u64, base: u64) -> u64 {
+    let mut m = from - from % base;
+    let mut n = 0;
+    loop {
+        m += base;
+        if m > to {
+            return n;
+        }
+        n += 1;
+    }
+}
+
+/// What S5TMR-RETAIN-01 and the kind's rule give at the first execution after the restart, S
+/// at its held level: `(running, value, Q)`. Retentive: the value at STOP less the ticks after
+/// the restart, run out at 0 (on-delays then Q = 1, the others Q = 0). Cleared: a rising S
+/// starts the timer again with the TV (Q = 1 for the pulses, 0 for the on-delays); the
+/// off-delay, S held at 0, has no edge and stays cleared.
+fn expected_after_restart(
+    kind: S5Kind,
+    units: u16,
+    run_ticks: u64,
+    kept: bool,
+) -> (bool, u16, bool) {
+    let on_delay = matches!(kind, S5Kind::SOdt | S5Kind::SOdts);
+    if kept {
+        let left = u64::from(units).saturating_sub(run_ticks) as u16;
+        let running = left > 0;
+        (running, left, if on_delay { !running } else { running })
+    } else if kind == S5Kind::SOffdt {
+        (false, 0, false)
+    } else {
+        (true, units, !on_delay)
+    }
+}
+
+/// S5TMR-RETAIN-01: a timer of `kind` started at `t0` with `tv` (at least one unit), its S
+/// held (at 0 after the falling edge for S_OFFDT), the CPU in STOP from `stop` to `restart`,
+/// executed again at `t1` (`t0 <= stop <= restart <= t1`), in the three forms (reference,
+/// optimized, and `T 0` and `T 1` of an area with `T 0` retentive iff `retentive` and `T 1`
+/// never). Oracle: the ticks are the multiples of the base in `(t0, stop]` and `(restart, t1]`,
+/// counted one by one; right after the restart a cleared timer is `S5State::RESET`. When the
+/// STOP lasts a whole number of 10 s (every base's ticks fall alike), the kept timer also
+/// equals an uninterrupted run with the STOP cut out of the clock. Returns whether a tick fell
+/// in the STOP (so that counting it would have changed the result).
+pub fn prop_s5_run_stop_run(
+    kind: S5Kind,
+    tv: S5Time,
+    t0: u64,
+    stop: u64,
+    restart: u64,
+    t1: u64,
+    retentive: bool,
+) -> bool {
+    let at = CpuTime::from_millis;
+    let base = u64::from(tv.base().millis());
+    let level = !kind.starts_on_falling_edge();
+    let start = |timer: &mut dyn S5TimerOps, t: u64| {
+        timer.call(kind, at(t), S5Input::new(true, false, tv));
+        if !level {
+            timer.call(kind, at(t), S5Input::new(false, false, tv));
+        }
+    };
+    let held = S5Input::new(level, false, tv);
+    let run_ticks = multiples_in(t0, stop, base) + multiples_in(restart, t1, base);
+
+    let mut r = S5TimerRef::new();
+    let mut w = S5Timer::new();
+    let mut area = TimerMemory::<2>::new();
+    start(&mut r, t0);
+    start(&mut w, t0);
+    for index in 0..2 {
+        area.call(index, kind, at(t0), S5Input::new(true, false, tv))
+            .expect("T 0 and T 1 exist");
+        if !level {
+            area.call(index, kind, at(t0), S5Input::new(false, false, tv))
+                .expect("T 0 and T 1 exist");
+        }
+    }
+    r.run_stop_run(at(stop), at(restart), retentive);
+    w.run_stop_run(at(stop), at(restart), retentive);
+    area.run_stop_run(at(stop), at(restart), usize::from(retentive));
+    let area_states = [area.get(0), area.get(1)].map(|s| s.expect("T 0 and T 1 exist"));
+    for (form, state, kept) in [
+        ("reference", r.state(), retentive),
+        ("optimized", w.state(), retentive),
+        ("area T 0", area_states[0], retentive),
+        ("area T 1", area_states[1], false),
+    ] {
+        if !kept {
+            check_eq!(
+                state,
+                S5State::RESET,
+                "S5TMR-RETAIN-01: {form}: a non-retentive timer is cleared at the restart: {kind:?} {tv:?}"
+            );
+        }
+    }
+    let outs = [
+        (
+            "reference",
+            r.call(kind, at(t1), held),
+            r.state(),
+            retentive,
+        ),
+        (
+            "optimized",
+            w.call(kind, at(t1), held),
+            w.state(),
+            retentive,
+        ),
+        (
+            "area T 0",
+            area.call(0, kind, at(t1), held).expect("T 0 exists"),
+            area.get(0).expect("T 0 exists"),
+            retentive,
+        ),
+        (
+            "area T 1",
+            area.call(1, kind, at(t1), held).expect("T 1 exists"),
+            area.get(1).expect("T 1 exists"),
+            false,
+        ),
+    ];
+    for (form, out, state, kept) in outs {
+        let expected = expected_after_restart(kind, tv.units(), run_ticks, kept);
+        check_eq!(
+            (state.running, out.bi, out.q),
+            expected,
+            "S5TMR-RETAIN-01: {form}: no tick in STOP, kept = {kept}: {kind:?} {tv:?} start {t0} STOP {stop}..{restart} call {t1}"
+        );
+    }
+    let d = restart - stop;
+    if retentive && d.is_multiple_of(10_000) {
+        let mut cut = S5TimerRef::new();
+        start(&mut cut, t0);
+        let uninterrupted = cut.call(kind, at(t1 - d), held);
+        check_eq!(
+            (outs[0].1, outs[0].2),
+            (uninterrupted, cut.state()),
+            "S5TMR-RETAIN-01: the run across STOP is the run with the STOP cut out: {kind:?} {tv:?} start {t0} STOP {stop}..{restart} call {t1}"
+        );
+    }
+    multiples_in(stop, restart, base) > 0
+}
+
+/// Exhaustive over the five kinds, TVs of 1, 2, 50 and 999 units of 10 ms and of one unit of
+/// the other bases, start times on and off the 10 ms grid, STOPs beginning 0 to 1 s after the
+/// start and lasting 0 ms to 20 s (on and off the 10 s grid), calls 0 ms to 10 s after the
+/// restart, retentive or not: 38 880 cases.
+#[cfg(not(kani))]
+#[test]
+fn exhaustive_s5_run_stop_run() {
+    let tvs: Vec<S5Time> = [0x0001u16, 0x0002, 0x0050, 0x0999, 0x1001, 0x2001, 0x3001]
+        .into_iter()
+        .map(|w| S5Time::from_word(w).expect("BCD"))
+        .collect();
+    check_ids(&["S5TMR-RETAIN-01"], || {
+        for kind in S5Kind::ALL {
+            for &tv in &tvs {
+                for t0 in [0u64, 5, 10] {
+                    for to_stop in [0u64, 5, 10, 15, 100, 1_000] {
+                        for d in [0u64, 5, 10, 9_995, 10_000, 20_000] {
+                            for to_call in [0u64, 5, 10, 30, 1_000, 10_000] {
+                                for retentive in [false, true] {
+                                    let stop = t0 + to_stop;
+                                    let restart = stop + d;
+                                    let ticked = prop_s5_run_stop_run(
+                                        kind,
+                                        tv,
+                                        t0,
+                                        stop,
+                                        restart,
+                                        restart + to_call,
+                                        retentive,
+                                    );
+                                    cover!(
+                                        ticked && retentive,
+                                        "S5TMR-RETAIN-01: a kept timer with ticks in STOP"
+                                    );
+                                    cover!(
+                                        ticked && retentive && d.is_multiple_of(10_000) && d > 0,
+                                        "S5TMR-RETAIN-01: the cut-clock comparison across a STOP"
+                                    );
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    });
+}
+
+/// SC-RETAIN-01: from `state`, a RUN-STOP-RUN in the three forms (reference, optimized, and
+/// `C 0` and `C 1` of an area with `C 0` retentive iff `retentive` and `C 1` never) leaves the
+/// state as it was (retentive) or `S5CounterState::RESET`; then an S_CUD call with CU = 1 acts
+/// as on a counter never stopped (retentive) or counts once from 0 (cleared: the CU memory is 0).
+pub fn prop_s5_counter_run_stop_run(state: S5CounterState, retentive: bool) {
+    let up = S5CounterInput {
+        cu: true,
+        ..S5CounterInput::default()
+    };
+    let mut r = S5CounterRef::from_state(state).expect("a valid state");
+    let mut w = S5Counter::from_state(state).expect("a valid state");
+    let mut area = CounterMemory::<2>::new();
+    for index in 0..2 {
+        let stored = area.set_state(index, state).expect("C 0 and C 1 exist");
+        check!(stored, "SC-RETAIN-01: a valid state is stored: {state:?}");
+    }
+    r.run_stop_run(retentive);
+    w.run_stop_run(retentive);
+    area.run_stop_run(usize::from(retentive));
+    let mut never_stopped = S5CounterRef::from_state(state).expect("a valid state");
+    let forms: [(&str, &mut dyn S5CounterOps, bool); 2] = [
+        ("reference", &mut r, retentive),
+        ("optimized", &mut w, retentive),
+    ];
+    let mut results = Vec::new();
+    for (form, counter, kept) in forms {
+        results.push((
+            form,
+            counter.state(),
+            counter.call(S5CounterKind::SCud, up),
+            kept,
+        ));
+    }
+    for index in 0..2 {
+        let before = area.get(index).expect("C 0 and C 1 exist");
+        let out = area
+            .call(index, S5CounterKind::SCud, up)
+            .expect("C 0 and C 1 exist");
+        let form = if index == 0 { "area C 0" } else { "area C 1" };
+        results.push((form, before, out, index == 0 && retentive));
+    }
+    let continued = never_stopped.call(S5CounterKind::SCud, up);
+    for (form, before, out, kept) in results {
+        let (expected_state, expected_cv) = if kept {
+            (state, continued.cv)
+        } else {
+            (S5CounterState::RESET, 1)
+        };
+        check_eq!(
+            (before, out.cv),
+            (expected_state, expected_cv),
+            "SC-RETAIN-01: {form}: kept = {kept}: {state:?}"
+        );
+    }
+}
+
+/// Exhaustive over CV 0, 1, 2, 998 and 999 with every combination of the four edge memories,
+/// retentive or not.
+#[cfg(not(kani))]
+#[test]
+fn exhaustive_s5_counter_run_stop_run() {
+    check_ids(&["SC-RETAIN-01"], || {
+        for cv in [0u16, 1, 2, 998, 999] {
+            for f in 0..16u8 {
+                let state = S5CounterState {
+                    cv,
+                    cu_prev: f & 1 != 0,
+                    cd_prev: f & 2 != 0,
+                    s_prev: f & 4 != 0,
+                    fr_prev: f & 8 != 0,
+                };
+                for retentive in [false, true] {
+                    prop_s5_counter_run_stop_run(state, retentive);
+                    cover!(
+                        retentive && state.cu_prev && cv > 0,
+                        "SC-RETAIN-01: a kept CU memory does not count again"
+                    );
+                }
+            }
         }
     });
 }

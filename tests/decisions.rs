@@ -2,8 +2,11 @@
 //! pins: each test names its item and rule. Expected values are worked out by hand from the
 //! rule's text in the comments.
 
+use plc_timers::counter::s5::{
+    CounterMemory, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
+};
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps, S5TimerRef};
+use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerMemory};
 use plc_timers::time::{CpuTime, S5Time};
 
 fn at(ms: u64) -> CpuTime {
@@ -107,4 +110,112 @@ fn tv_word_not_bcd_never_reaches_the_box() {
         .map_err(|e| e.to_string())
         .expect_err("not BCD");
     assert!(message.contains("10") || message.contains('A'), "{message}");
+}
+
+/// decisions.md R17, S5TMR-RETAIN-01: S_ODT with S5T#100MS (10 units of 10 ms), S held from 0
+/// ms, the CPU in STOP from 45 ms to 5 000 ms. The ticks at 10, 20, 30 and 40 ms leave 6 units
+/// at STOP; none falls in STOP, so a retentive timer has 6 units at the restart and runs out
+/// with the 6th tick after it, at 5 060 ms (BI 1 and Q 0 at 5 050 ms). Counting the STOP would
+/// have given Q = 1 at 5 000 ms. A non-retentive timer is cleared; S still 1 at 5 000 ms is a
+/// rising edge: it starts again with 10 units (BI 5 at 5 050 ms) and runs out at 5 100 ms.
+/// The area takes T 0 as retentive and T 1 not.
+#[test]
+fn s_odt_across_stop_no_tick_in_stop() {
+    let on = S5Input::new(true, false, S5Time::parse("S5T#100MS").expect("literal"));
+    let kind = S5Kind::SOdt;
+    for retentive in [false, true] {
+        let mut r = S5TimerRef::new();
+        let mut w = S5Timer::new();
+        r.call(kind, at(0), on);
+        w.call(kind, at(0), on);
+        assert_eq!(r.call(kind, at(40), on).bi, 6);
+        assert_eq!(w.call(kind, at(40), on).bi, 6);
+        r.run_stop_run(at(45), at(5_000), retentive);
+        w.run_stop_run(at(45), at(5_000), retentive);
+        if !retentive {
+            assert_eq!(r.state(), S5State::RESET, "S5TMR-RETAIN-01: cleared");
+            assert_eq!(w.state(), S5State::RESET, "S5TMR-RETAIN-01: cleared");
+        }
+        let expected = if retentive {
+            [(5_000, false, 6), (5_050, false, 1), (5_060, true, 0)]
+        } else {
+            [(5_000, false, 10), (5_050, false, 5), (5_100, true, 0)]
+        };
+        for t in [&mut r as &mut dyn S5TimerOps, &mut w] {
+            for (ms, q, bi) in expected {
+                let o = t.call(kind, at(ms), on);
+                assert_eq!(
+                    (o.q, o.bi),
+                    (q, bi),
+                    "S5TMR-RETAIN-01: retentive = {retentive}, at {ms} ms"
+                );
+            }
+        }
+    }
+    let mut area = TimerMemory::<2>::new();
+    for index in 0..2 {
+        area.call(index, kind, at(0), on).expect("T 0 and T 1");
+    }
+    area.run_stop_run(at(45), at(5_000), 1);
+    let bi = |area: &mut TimerMemory<2>, index, ms| {
+        area.call(index, kind, at(ms), on).expect("T 0 and T 1").bi
+    };
+    assert_eq!(
+        (bi(&mut area, 0, 5_050), bi(&mut area, 1, 5_050)),
+        (1, 10),
+        "S5TMR-RETAIN-01: T 0 kept with 6 units, T 1 cleared and started again at 5 050 ms"
+    );
+}
+
+/// decisions.md R17, SC-RETAIN-01: S_CU counted to 3 by three rising CU, CU held at 1 across a
+/// STOP. Retentive: CV 3 kept, and the held CU (its memory kept) does not count: 3.
+/// Non-retentive: CV 0, the CU memory cleared, so the held CU counts once: 1. The area takes C 0
+/// as retentive and C 1 not.
+#[test]
+fn s_cu_across_stop_kept_or_cleared() {
+    let cu = |cu| S5CounterInput {
+        cu,
+        ..S5CounterInput::default()
+    };
+    let count_to_three = |c: &mut dyn S5CounterOps| {
+        for level in [true, false, true, false, true] {
+            c.call(S5CounterKind::SCu, cu(level));
+        }
+    };
+    for retentive in [false, true] {
+        let mut r = S5CounterRef::new();
+        let mut w = S5Counter::new();
+        count_to_three(&mut r);
+        count_to_three(&mut w);
+        r.run_stop_run(retentive);
+        w.run_stop_run(retentive);
+        let expected = if retentive { 3 } else { 1 };
+        for c in [&mut r as &mut dyn S5CounterOps, &mut w] {
+            assert_eq!(
+                c.call(S5CounterKind::SCu, cu(true)).cv,
+                expected,
+                "SC-RETAIN-01: retentive = {retentive}"
+            );
+        }
+    }
+    let mut area = CounterMemory::<2>::new();
+    for index in 0..2 {
+        for level in [true, false, true, false, true] {
+            area.call(index, S5CounterKind::SCu, cu(level))
+                .expect("C 0 and C 1");
+        }
+    }
+    area.run_stop_run(1);
+    let cv: Vec<u16> = (0..2)
+        .map(|index| {
+            area.call(index, S5CounterKind::SCu, cu(true))
+                .expect("C 0 and C 1")
+                .cv
+        })
+        .collect();
+    assert_eq!(
+        cv,
+        [3, 1],
+        "SC-RETAIN-01: C 0 kept, C 1 cleared and counted once"
+    );
 }

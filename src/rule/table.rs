@@ -77,6 +77,8 @@ pub enum Rule {
     S5TMR_TV_01,
     /// S5TMR-TVBCD-01 (`spec/requirements/s5.toml`): A TV whose value field has a digit above 9 never reaches a timer: the box takes an S5TIME, which only a word of three BCD digits makes (bits 15-14 ignored), and such a word is refused with an error naming the digit; every valid word starts a timer with its BCD value in binary at BI and its digits and base at BCD.
     S5TMR_TVBCD_01,
+    /// S5TMR-RETAIN-01 (`spec/requirements/s5.toml`): On RUN-STOP-RUN (STOP from a time \`stop\` to a time \`restart\`) the OS ticks up to \`stop\` are applied and none falls in STOP: a timer running at STOP resumes at the restart with the value it had at STOP, its ticks counted on RUN time only. At the restart a retentive timer keeps its whole state (value, base, Q, running, edge memories); a non-retentive one is cleared (stopped, value and base 0, Q = 0, edge memories 0), so an S still 1 at its first execution is a rising edge and starts it. A timer memory area takes the number of retentive timers from T 0.
+    S5TMR_RETAIN_01,
     /// IEC-START-01 (`spec/requirements/iec.toml`): On the starting edge (rising IN for TP and TON, falling IN for TOF) the CPU millisecond clock is copied into START; each update computes elapsed = now - START.
     IEC_START_01,
     /// IEC-EDGE-01 (`spec/requirements/iec.toml`): A stopped timer starts only on its starting edge; TONR times whenever IN = 1 and R = 0 (see TONR-RESUME-01).
@@ -157,6 +159,8 @@ pub enum Rule {
     SC_INPUTS_01,
     /// SC-STL-01 (`spec/requirements/counter.toml`): In the counter memory area, each STL operation (FR, CU, CD, S, R C n) evaluates only its own input: its edge memory takes the RLO and the others are untouched, except where the operation's own rule clears them (FR: SC-FR-01; S: SC-SET-01); R acts only while its own operation runs with RLO 1.
     SC_STL_01,
+    /// SC-RETAIN-01 (`spec/requirements/counter.toml`): On RUN-STOP-RUN a retentive S5 counter keeps its state (CV and edge memories); a non-retentive one is cleared (CV = 0, Q = 0, edge memories 0), so a CU or CD still 1 at its first call after the restart counts once. A counter memory area takes the number of retentive counters from C 0. A counter has no time: the STOP's length changes nothing.
+    SC_RETAIN_01,
     /// CLI-RUN-01 (`spec/requirements/cli.toml`): plc-timers run BLOCK \[FILE\] reads a CSV trace whose header is resolved once against the block catalog (case-insensitive columns in any order: t\_ms, the block's inputs, its coils (the IEC timers' RT, the -(RT)- coil, which a row with RT = 1 runs before the box call), its preset; absent booleans 0; the preset as a column or an option), runs the block row by row and writes every record as written followed by the block's outputs in catalog order. A UTF-8 BOM, CRLF line ends, quoted fields, blanks around cells, blank and # comment lines anywhere give the same outputs; a header-only trace writes the output header; --optimized gives the same output as the reference.
     CLI_RUN_01,
     /// CLI-RUN-02 (`spec/requirements/cli.toml`): run streams: it holds one record at a time and allocates nothing per row; when it meets bad input after some rows, the rows before have been written and the exit status is 2; a closed output pipe ends the command quietly with exit status 0.
@@ -189,10 +193,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 85;
+    pub const COUNT: usize = 87;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 85] = [
+    pub const ALL: [Rule; 87] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -224,6 +228,7 @@ impl Rule {
         Rule::S5_AREA_01,
         Rule::S5TMR_TV_01,
         Rule::S5TMR_TVBCD_01,
+        Rule::S5TMR_RETAIN_01,
         Rule::IEC_START_01,
         Rule::IEC_EDGE_01,
         Rule::IEC_PT_LATCH_01,
@@ -264,6 +269,7 @@ impl Rule {
         Rule::SC_FR_01,
         Rule::SC_INPUTS_01,
         Rule::SC_STL_01,
+        Rule::SC_RETAIN_01,
         Rule::CLI_RUN_01,
         Rule::CLI_RUN_02,
         Rule::CLI_ERR_01,
@@ -314,6 +320,7 @@ impl Rule {
             Rule::S5_AREA_01 => "S5-AREA-01",
             Rule::S5TMR_TV_01 => "S5TMR-TV-01",
             Rule::S5TMR_TVBCD_01 => "S5TMR-TVBCD-01",
+            Rule::S5TMR_RETAIN_01 => "S5TMR-RETAIN-01",
             Rule::IEC_START_01 => "IEC-START-01",
             Rule::IEC_EDGE_01 => "IEC-EDGE-01",
             Rule::IEC_PT_LATCH_01 => "IEC-PT-LATCH-01",
@@ -354,6 +361,7 @@ impl Rule {
             Rule::SC_FR_01 => "SC-FR-01",
             Rule::SC_INPUTS_01 => "SC-INPUTS-01",
             Rule::SC_STL_01 => "SC-STL-01",
+            Rule::SC_RETAIN_01 => "SC-RETAIN-01",
             Rule::CLI_RUN_01 => "CLI-RUN-01",
             Rule::CLI_RUN_02 => "CLI-RUN-02",
             Rule::CLI_ERR_01 => "CLI-ERR-01",
@@ -405,6 +413,7 @@ impl Rule {
             Rule::S5_AREA_01 => "A time-base tick of the timer memory area updates every running timer of that base in one pass, as the reference tick of each timer.",
             Rule::S5TMR_TV_01 => "TV is read only by a start: a TV changed while the timer runs, or while it is stopped, changes nothing (value, base, Q, BI, BCD) until the next start, which loads the TV at the box in that execution.",
             Rule::S5TMR_TVBCD_01 => "A TV whose value field has a digit above 9 never reaches a timer: the box takes an S5TIME, which only a word of three BCD digits makes (bits 15-14 ignored), and such a word is refused with an error naming the digit; every valid word starts a timer with its BCD value in binary at BI and its digits and base at BCD.",
+            Rule::S5TMR_RETAIN_01 => "On RUN-STOP-RUN (STOP from a time `stop` to a time `restart`) the OS ticks up to `stop` are applied and none falls in STOP: a timer running at STOP resumes at the restart with the value it had at STOP, its ticks counted on RUN time only. At the restart a retentive timer keeps its whole state (value, base, Q, running, edge memories); a non-retentive one is cleared (stopped, value and base 0, Q = 0, edge memories 0), so an S still 1 at its first execution is a rising edge and starts it. A timer memory area takes the number of retentive timers from T 0.",
             Rule::IEC_START_01 => "On the starting edge (rising IN for TP and TON, falling IN for TOF) the CPU millisecond clock is copied into START; each update computes elapsed = now - START.",
             Rule::IEC_EDGE_01 => "A stopped timer starts only on its starting edge; TONR times whenever IN = 1 and R = 0 (see TONR-RESUME-01).",
             Rule::IEC_PT_LATCH_01 => "While a timer runs, a change of PT at the box has no effect: the preset is latched at the start (TONR: when it resumes).",
@@ -445,6 +454,7 @@ impl Rule {
             Rule::SC_FR_01 => "A rising edge at FR (STL FR C n) clears the edge memories of CU, CD and S, and does nothing else; an operation executed next with RLO = 1 then counts or sets again. FR held at 1 does nothing further. The LAD boxes have no FR; in traces it is an extra column.",
             Rule::SC_INPUTS_01 => "S_CU has no CD input and S_CD no CU input: their boxes do not execute that operation, so its edge memory is left as it is.",
             Rule::SC_STL_01 => "In the counter memory area, each STL operation (FR, CU, CD, S, R C n) evaluates only its own input: its edge memory takes the RLO and the others are untouched, except where the operation's own rule clears them (FR: SC-FR-01; S: SC-SET-01); R acts only while its own operation runs with RLO 1.",
+            Rule::SC_RETAIN_01 => "On RUN-STOP-RUN a retentive S5 counter keeps its state (CV and edge memories); a non-retentive one is cleared (CV = 0, Q = 0, edge memories 0), so a CU or CD still 1 at its first call after the restart counts once. A counter memory area takes the number of retentive counters from C 0. A counter has no time: the STOP's length changes nothing.",
             Rule::CLI_RUN_01 => "plc-timers run BLOCK [FILE] reads a CSV trace whose header is resolved once against the block catalog (case-insensitive columns in any order: t_ms, the block's inputs, its coils (the IEC timers' RT, the -(RT)- coil, which a row with RT = 1 runs before the box call), its preset; absent booleans 0; the preset as a column or an option), runs the block row by row and writes every record as written followed by the block's outputs in catalog order. A UTF-8 BOM, CRLF line ends, quoted fields, blanks around cells, blank and # comment lines anywhere give the same outputs; a header-only trace writes the output header; --optimized gives the same output as the reference.",
             Rule::CLI_RUN_02 => "run streams: it holds one record at a time and allocates nothing per row; when it meets bad input after some rows, the rows before have been written and the exit status is 2; a closed output pipe ends the command quietly with exit status 0.",
             Rule::CLI_ERR_01 => "Bad input (unknown block, option or column, malformed value, decreasing t_ms, out-of-range literal, BCD digit above 9, wrong field count) gives a message on standard error that names the line and the column (for a field-count error: the header's fields), says what is allowed, shows a cell cut after 60 characters, and exits 2; no input makes the tool panic.",

@@ -408,3 +408,34 @@ impl crate::simd::Kernel for TickOnce<'_> {
         TimerWord::tick_once_cells(self.cells, self.bits);
     }
 }
+
+impl<const N: usize> TimerMemory<N> {
+    /// S5TMR-RETAIN-01: a RUN-STOP-RUN, the CPU in STOP from `stop` to `restart`. The area's
+    /// clock is advanced to `stop` ([`TimerMemory::advance_to`]); no OS tick falls in STOP (LAD
+    /// manual §9.1: "in RUN mode"), so the clock then jumps to `restart` without ticks. At the
+    /// restart the first `retentive` timers (`T 0` .. `T retentive-1`: the S7-300/400 CPUs'
+    /// retentivity setting, "number of timers from T 0", recalled) keep their words and the
+    /// others are cleared ([`TimerWord::RESET`]); 0 clears all, `N` or more keeps all. A time
+    /// before the area's clock moves nothing back.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5Input, S5Kind, TimerMemory};
+    /// use plc_timers::time::CpuTime;
+    /// let at = CpuTime::from_millis;
+    /// let on = S5Input::new(true, false, plc_timers::s5time!("S5T#100MS"));
+    /// let mut area = TimerMemory::<2>::new();
+    /// area.call(0, S5Kind::SPext, at(0), on)?;
+    /// area.call(1, S5Kind::SPext, at(0), on)?;
+    /// area.run_stop_run(at(40), at(5_000), 1); // T 0 retentive, T 1 not
+    /// area.advance_to(at(5_030));
+    /// assert_eq!((area.load(0)?, area.load(1)?), (3, 0));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn run_stop_run(&mut self, stop: CpuTime, restart: CpuTime, retentive: usize) {
+        self.advance_to(stop);
+        self.now = self.now.max(restart);
+        for index in retentive.min(N)..N {
+            self.write(index, TimerWord::RESET);
+        }
+    }
+}

@@ -377,3 +377,33 @@ impl S5TimerOps for S5TimerRef {
         self.state
     }
 }
+
+impl S5TimerRef {
+    /// S5TMR-RETAIN-01: a RUN-STOP-RUN, the CPU in STOP from `stop` to `restart`. The OS ticks
+    /// up to `stop` are applied; none falls in STOP (LAD manual §9.1: the OS decrements the
+    /// value "in RUN mode"), so the first execution after the restart counts the ticks from
+    /// `restart` on. At the restart a retentive timer keeps its whole state (value, base, Q,
+    /// running, edge memories) and a non-retentive one is [`S5State::RESET`] (a decision, as
+    /// IEC-RETAIN-01 is for the IEC timers). A time before the previous execution moves nothing
+    /// back: no tick is applied twice.
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5Input, S5Kind, S5State, S5TimerOps, S5TimerRef};
+    /// use plc_timers::time::CpuTime;
+    /// let at = CpuTime::from_millis;
+    /// let on = S5Input::new(true, false, plc_timers::s5time!("S5T#100MS")); // 10 units of 10 ms
+    /// let mut t = S5TimerRef::new();
+    /// t.call(S5Kind::SOdt, at(0), on);
+    /// t.run_stop_run(at(40), at(5_000), true); // 4 ticks before the STOP, none in it
+    /// assert_eq!(t.call(S5Kind::SOdt, at(5_030), on).bi, 3); // 3 ticks since the restart
+    /// t.run_stop_run(at(5_030), at(6_000), false);
+    /// assert_eq!(t.state(), S5State::RESET);
+    /// ```
+    pub fn run_stop_run(&mut self, stop: CpuTime, restart: CpuTime, retentive: bool) {
+        self.tick(ticks_between(self.last_call, stop, self.state.base));
+        self.last_call = self.last_call.max(stop).max(restart);
+        if !retentive {
+            self.state = S5State::RESET;
+        }
+    }
+}

@@ -525,6 +525,34 @@ impl S5TimerOps for S5Timer {
     }
 }
 
+impl S5Timer {
+    /// S5TMR-RETAIN-01: a RUN-STOP-RUN, the CPU in STOP from `stop` to `restart`, as
+    /// [`super::S5TimerRef::run_stop_run`]: the ticks up to `stop`, none in STOP, and at the
+    /// restart the word kept (retentive) or cleared ([`TimerWord::RESET`]).
+    ///
+    /// ```
+    /// use plc_timers::s5::{S5Input, S5Kind, S5Timer, S5TimerOps};
+    /// use plc_timers::time::CpuTime;
+    /// let at = CpuTime::from_millis;
+    /// let on = S5Input::new(true, false, plc_timers::s5time!("S5T#100MS"));
+    /// let mut t = S5Timer::new();
+    /// t.call(S5Kind::SOdt, at(0), on);
+    /// t.run_stop_run(at(40), at(5_000), true);
+    /// assert_eq!(t.call(S5Kind::SOdt, at(5_030), on).bi, 3);
+    /// ```
+    pub fn run_stop_run(&mut self, stop: CpuTime, restart: CpuTime, retentive: bool) {
+        let base = ((self.word.0 & BASE) >> 12) as usize;
+        // `tick` leaves a stopped word as it is.
+        self.word = self
+            .word
+            .tick(ticks_between_fast(self.last_call, stop, base));
+        self.last_call = self.last_call.max(stop).max(restart);
+        if !retentive {
+            self.word = TimerWord::RESET;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::{div_by_base, TimerWord, BASE_DIVISORS, USED};

@@ -291,3 +291,25 @@ impl<const N: usize> CounterMemory<N> {
         self.explained(index, |c, rec| c.reset_rec(rlo, rec))
     }
 }
+
+impl<const N: usize> CounterMemory<N> {
+    /// SC-RETAIN-01: a RUN-STOP-RUN. The first `retentive` counters (`C 0` .. `C retentive-1`:
+    /// the S7-300/400 CPUs' retentivity setting, "number of counters from C 0", recalled) keep
+    /// their words and the others are cleared; 0 clears all, `N` or more keeps all.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{CounterMemory, CounterPreset};
+    /// let mut area = CounterMemory::<2>::new();
+    /// let five = CounterPreset::new(5).expect("0..=999");
+    /// area.set(0, true, five)?;
+    /// area.set(1, true, five)?;
+    /// area.run_stop_run(1); // C 0 retentive, C 1 not
+    /// assert_eq!((area.load(0)?, area.load(1)?), (5, 0));
+    /// # Ok::<(), plc_timers::NoSuchOperand>(())
+    /// ```
+    pub fn run_stop_run(&mut self, retentive: usize) {
+        for w in self.words.iter_mut().skip(retentive) {
+            w.run_stop_run(false);
+        }
+    }
+}

@@ -219,3 +219,25 @@ impl S5CounterOps for S5CounterRef {
         self.state
     }
 }
+
+impl S5CounterRef {
+    /// SC-RETAIN-01: a RUN-STOP-RUN. A counter has no time, so the STOP's length does not
+    /// matter: at the restart a retentive counter keeps its state (CV and edge memories) and a
+    /// non-retentive one is [`S5CounterState::RESET`] (a decision, as IEC-RETAIN-01 is for the
+    /// IEC timers).
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef};
+    /// let mut c = S5CounterRef::new();
+    /// c.call(S5CounterKind::SCu, S5CounterInput { cu: true, ..Default::default() });
+    /// c.run_stop_run(true);
+    /// assert_eq!(c.state().cv, 1);
+    /// c.run_stop_run(false);
+    /// assert_eq!(c.state().cv, 0);
+    /// ```
+    pub fn run_stop_run(&mut self, retentive: bool) {
+        if !retentive {
+            self.state = S5CounterState::RESET;
+        }
+    }
+}

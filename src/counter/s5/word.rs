@@ -219,3 +219,21 @@ impl S5CounterOps for S5Counter {
         S5Counter::state(*self)
     }
 }
+
+impl S5Counter {
+    /// SC-RETAIN-01: a RUN-STOP-RUN, as [`super::S5CounterRef::run_stop_run`]: the word kept
+    /// (retentive) or cleared.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::{S5Counter, S5CounterInput, S5CounterKind, S5CounterOps};
+    /// let mut c = S5Counter::new();
+    /// c.call(S5CounterKind::SCu, S5CounterInput { cu: true, ..Default::default() });
+    /// c.run_stop_run(false);
+    /// assert_eq!(c, S5Counter::new());
+    /// ```
+    pub fn run_stop_run(&mut self, retentive: bool) {
+        if !retentive {
+            *self = S5Counter::new();
+        }
+    }
+}
