@@ -46,6 +46,14 @@
 //! form, and through `ton_for_arrays` / `call_for_arrays`, the forms for loops over many
 //! instances (the goals' figures).
 //!
+//! Per-instance loops (issue 41): for each of TP, TON, TOF, TONR, CTU, CTD and CTUD, a plain
+//! `for` over 10 048 instances calling `call` once per scan, as a runtime compiles `FOR i :=
+//! ... DO block[i](...)`, the optimized form's loop beside the reference's (TON, CTU and CTUD
+//! in the bulk groups above; TP, TOF, TONR on the TON plant's inputs, TONR's R a pulse at each
+//! rise of another timer's IN, and CTD on the CTUD scans, in groups `loop of 10 048 ...`).
+//! Goals: the optimized loop no slower than the reference's, and the array forms
+//! (`ton_array`, `call_array`) at least 2x faster than it.
+//!
 //! The peers, ported in [`rusty`] and [`matiec`]:
 //!
 //! - RuSTy (github `PLC-lang/rusty`), its standard library written in Rust,
@@ -812,6 +820,134 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
     run_group(c, &group_name(family, TON_BANK), ws);
 }
 
+/// The per-instance loop of IEC timer kind `IecKind::ALL[K]` (TP, TOF, TONR; TON's is in
+/// [`bulk_ton`]) as a runtime writes it: a plain `for` over 10 048 instances, each called once
+/// per scan with its IN and PT (the TON plant's), its outputs passed to `black_box`; TONR's R
+/// is a one-scan pulse at each rise of another timer's IN (timer `i + BANK / 2`), so that it
+/// follows the family's inputs too. The reference's loop against the optimized `call`'s.
+fn loop_iec<const K: usize>(c: &mut Criterion, family: Family) {
+    let kind = IecKind::ALL[K];
+    let plant = common::family_ton_plant(family);
+    let pt: &[Time] = &plant.pt;
+    let scans: &[Vec<bool>] = &plant.scans;
+    let resets: Vec<Vec<bool>> = (0..SCANS)
+        .map(|k| {
+            let (now, before) = (&scans[k], &scans[(k + SCANS - 1) % SCANS]);
+            (0..BANK)
+                .map(|i| {
+                    let j = (i + BANK / 2) % BANK;
+                    now[j] && !before[j]
+                })
+                .collect()
+        })
+        .collect();
+    let resets = &resets;
+    macro_rules! per_instance {
+        ($name:literal, $new:expr) => {{
+            let mut timers = vec![$new; BANK];
+            let mut k = 0u64;
+            Workload::plain($name, 1, 1e-3, move || {
+                k += 1;
+                let now = CpuTime::from_millis(scan_time(k));
+                let s = k as usize % SCANS;
+                let lanes = timers.iter_mut().zip(&scans[s]).zip(&resets[s]).zip(pt);
+                for (((t, &input), &reset), &pt) in lanes {
+                    // The kind a constant at the call, as in a PLC program.
+                    let input = IecInput::new(input, pt).with_reset(reset);
+                    black_box(t.call(IecKind::ALL[K], now, input));
+                }
+            })
+        }};
+    }
+    let ws = vec![
+        per_instance!("reference (IecTimerRef array)", IecTimerRef::<u32>::new()),
+        per_instance!("optimized (IecTimer array, call)", IecTimer::new()),
+    ];
+    run_group(c, &group_name(family, &loop_group(kind.name())), ws);
+}
+
+/// The group of the per-instance loop over 10 048 instances of `block` (TP, TOF, TONR, CTD).
+fn loop_group(block: &str) -> String {
+    format!("loop of 10 048 {block}")
+}
+
+/// The per-instance loop of 10 048 CTD INT counters (CTU's and CTUD's are in
+/// [`bulk_counters`]), on the CTUD banks' scans (CD and LD of each counter): the reference's
+/// `call` against the optimized forms, called one counter at a time and as one
+/// `Counter::call_array`.
+fn loop_ctd(c: &mut Criterion, family: Family) {
+    let scans: Vec<[Box<[bool; BANK]>; 4]> = common::family_counter_scans(family, false)
+        .into_iter()
+        .map(|s| [s.cu, s.cd, s.r, s.ld].map(|v| v.try_into().expect("BANK inputs")))
+        .collect();
+    let scans = &scans;
+    let pv: i16 = 100;
+    macro_rules! per_instance {
+        ($name:literal, $new:expr, |$t:ident, $input:ident| $call:expr) => {{
+            let mut counters = vec![$new; BANK];
+            let mut k = 0usize;
+            Workload::plain($name, 1, 1e-3, move || {
+                k += 1;
+                let s = &scans[k % scans.len()];
+                for (i, $t) in counters.iter_mut().enumerate() {
+                    let $input = CounterInput {
+                        cu: s[0][i],
+                        cd: s[1][i],
+                        r: s[2][i],
+                        ld: s[3][i],
+                        pv,
+                    };
+                    black_box($call);
+                }
+            })
+        }};
+    }
+    let mut ws = vec![
+        per_instance!(
+            "reference (CounterRef array)",
+            CounterRef::<i16>::new(),
+            |t, input| t.call(CounterKind::Ctd, input)
+        ),
+        per_instance!(
+            "optimized (Counter array, call)",
+            Counter::<i16>::new(),
+            |t, input| t.call(CounterKind::Ctd, input)
+        ),
+        per_instance!(
+            "optimized (Counter array, call_for_arrays)",
+            Counter::<i16>::new(),
+            |t, input| t.call_for_arrays(CounterKind::Ctd, input)
+        ),
+    ];
+    let mut counters = Box::new([Counter::<i16>::new(); BANK]);
+    let pvs = Box::new([pv; BANK]);
+    let (mut qu, mut qd) = (Box::new([false; BANK]), Box::new([false; BANK]));
+    let mut cv = Box::new([0i16; BANK]);
+    let mut k = 0usize;
+    ws.push(Workload::plain(
+        "optimized (Counter array, call_array)",
+        1,
+        1e-3,
+        move || {
+            k += 1;
+            let s = &scans[k % scans.len()];
+            Counter::call_array(
+                &mut counters,
+                CounterKind::Ctd,
+                &bank_inputs(s),
+                &pvs,
+                &mut ArrayOutputs {
+                    qu: &mut qu,
+                    qd: &mut qd,
+                    cv: &mut cv,
+                },
+            );
+            black_box((&mut counters, &mut qu, &mut qd, &mut cv));
+        },
+    ));
+    run_group(c, &group_name(family, &loop_group("CTD")), ws);
+}
+
 /// One scan's CU, CD, R and LD as the bank and `Counter::call_array` take them.
 fn bank_inputs(s: &[Box<[bool; BANK]>; 4]) -> BankInputs<'_, BANK> {
     BankInputs {
@@ -1267,6 +1403,33 @@ fn summary(family: Family, tally: &mut Tally) {
         println!("| {group} | {floor} (the floor) | {} | 1.00x | |", fmt(f));
     }
     println!();
+    println!(
+        "Per-instance loops (issue 41), µs per scan: a plain `for` over 10 048 instances \
+         calling `call`, as a runtime compiles `FOR i := ... DO block[i](...)`:"
+    );
+    println!();
+    println!("| block | reference loop | optimized `call` loop | reference / optimized | array form | reference / array form | goal: `call` loop <= reference loop |");
+    println!("|---|---|---|---|---|---|---|");
+    for (block, group, reference, array) in per_instance_loops() {
+        let get = |name: &str| result(&format!("{group}/{name}"));
+        let (r, o) = (
+            get(reference),
+            get(LOOP_CALL[usize::from(reference == COUNTER_REF)]),
+        );
+        let a = array.and_then(get);
+        let ok = r.zip(o).map(|(r, o)| o <= r);
+        tally.record(&format!("{fam}: {block} loop, call"), ok);
+        println!(
+            "| {block} | {} | {} | {} | {} | {} | {} |",
+            fmt(r),
+            fmt(o),
+            ratio_x(r, o),
+            array.map_or("-".into(), |name| format!("{name}: {}", fmt(a))),
+            ratio_x(r, a),
+            verdict(ok),
+        );
+    }
+    println!();
     println!("Goals of issue 29, family `{fam}` (the single steps: the table above):");
     let ratio = |a: &str, b: &str| result(a).zip(result(b)).map(|(a, b)| a / b);
     let mut goal = |what: &str, value: Option<f64>, ok: fn(f64) -> bool| {
@@ -1289,7 +1452,8 @@ fn summary(family: Family, tally: &mut Tally) {
         ),
         |v| v >= 2.0,
     );
-    for bank in [CTUD_BANK, CTU_BANK] {
+    let ctd_loop = loop_group("CTD");
+    for bank in [CTUD_BANK, CTU_BANK, ctd_loop.as_str()] {
         goal(
             &format!("CounterRef array / Counter array (call_array), {bank} (>= 2x)"),
             ratio(
@@ -1358,6 +1522,35 @@ fn summary(family: Family, tally: &mut Tally) {
     );
 }
 
+/// The reference's array workloads, by family of block.
+const TIMER_REF: &str = "reference (IecTimerRef array)";
+const COUNTER_REF: &str = "reference (CounterRef array)";
+/// The optimized `call` loops: timers, counters.
+const LOOP_CALL: [&str; 2] = [
+    "optimized (IecTimer array, call)",
+    "optimized (Counter array, call)",
+];
+
+/// Every per-instance loop of the summary: (block, group, the reference's workload, the array
+/// form's workload if the block has one).
+fn per_instance_loops() -> Vec<(&'static str, String, &'static str, Option<&'static str>)> {
+    let call_array = Some("optimized (Counter array, call_array)");
+    vec![
+        ("TP", loop_group("TP"), TIMER_REF, None),
+        (
+            "TON",
+            TON_BANK.to_owned(),
+            TIMER_REF,
+            Some("optimized (IecTimer array, ton_array)"),
+        ),
+        ("TOF", loop_group("TOF"), TIMER_REF, None),
+        ("TONR", loop_group("TONR"), TIMER_REF, None),
+        ("CTU", CTU_BANK.to_owned(), COUNTER_REF, call_array),
+        ("CTD", loop_group("CTD"), COUNTER_REF, call_array),
+        ("CTUD", CTUD_BANK.to_owned(), COUNTER_REF, call_array),
+    ]
+}
+
 fn ratio_x(a: Option<f64>, b: Option<f64>) -> String {
     a.zip(b)
         .map_or("-".into(), |(a, b)| format!("{:.2}x", a / b))
@@ -1413,6 +1606,10 @@ fn main() {
         bulk_ton(&mut c, family);
         bulk_counters::<false>(&mut c, family);
         bulk_counters::<true>(&mut c, family);
+        loop_iec::<0>(&mut c, family);
+        loop_iec::<2>(&mut c, family);
+        loop_iec::<3>(&mut c, family);
+        loop_ctd(&mut c, family);
         bulk_area(&mut c, family);
     }
     c.final_summary();

@@ -74,8 +74,9 @@ impl<T: CounterInt> Counter<T> {
     /// so the branches of `call` (R, LD, an edge) are mispredicted about as often as they
     /// change; here the edges give a 0/1 increment and decrement, applied by one saturating add
     /// and one saturating subtract, and R and LD select the new CV by conditional moves that
-    /// the compiler must keep ([`core::hint::select_unpredictable`]). `call` is faster for a
-    /// counter called once per scan, whose branches go the same way scan after scan.
+    /// the compiler must keep ([`core::hint::select_unpredictable`]). `call` computes CTU and
+    /// CTD with scalar selects; for CTUD it branches, which is faster for a counter called
+    /// once per scan, whose branches go the same way scan after scan.
     ///
     /// Why it equals the reference: see [`CounterOps::call`] (the same rules), and the lane of
     /// [`super::CounterBank::scan`], which is this function.
@@ -350,12 +351,16 @@ pub(crate) fn ctud_lane<T: CounterInt>(
 
 impl<T: CounterInt> CounterOps<T> for Counter<T> {
     /// The reference's rules (edges, then R before LD before counting), with the edge
-    /// memories in one byte, as branches: for a counter called once per scan they go the same
-    /// way most scans, and a predicted branch costs less than computing every case. CV is
-    /// written on every call, as the reference writes it: measured on both input families of
-    /// the peers benchmark, a write only when CV changes (one more branch, mispredicted on
-    /// random edges) was 5-10 % slower, and the branch-free form of
-    /// [`Counter::call_for_arrays`] slower still for one counter called once per scan.
+    /// memories in one byte. CTU and CTD without a branch: every choice is a conditional move
+    /// ([`core::hint::select_unpredictable`], which the compiler must keep as one). A PLC
+    /// program's `FOR` loop over an `ARRAY OF CTU` calls counters whose inputs and states
+    /// differ from one to the next, and a branch on an edge or on R was mispredicted about as
+    /// often as it changed: such a loop ran 2-3x slower than the reference's (issue 41).
+    /// CTUD keeps its branches: with selects its single step ran 2.7 ns against the
+    /// branches' 1.6 (`benches/peers`, both input families; a predicted branch lets the
+    /// processor run ahead of the previous call's CV, a select waits for it), and its loop
+    /// with branches still beats the reference's (whose CTUD branches too). CV is written on every call, as the reference
+    /// writes it.
     ///
     /// Why it equals [`super::CounterRef`]: the inputs a kind lacks are taken as 0, as the
     /// reference's `kind.mask` does (CNT-INPUTS-01). `up` and `down` are the reference's
@@ -366,25 +371,35 @@ impl<T: CounterInt> CounterOps<T> for Counter<T> {
     /// (CNT-SAT-01).
     #[inline(always)]
     fn call(&mut self, kind: CounterKind, input: CounterInput<T>) -> CounterOutput<T> {
+        use core::hint::select_unpredictable as select;
         let (cu, cd, r, ld) = masked_inputs(kind, &input);
         // Both members are read before either is written: a read of the whole struct after a
         // write of one byte of it would wait for that write to reach the cache.
         let (v, e) = (self.cv, self.edges);
-        let up = cu && e & CU_PREV == 0;
-        let down = cd && e & CD_PREV == 0;
+        let up = cu & (e & CU_PREV == 0);
+        let down = cd & (e & CD_PREV == 0);
         self.edges = edge_bits(cu, cd);
-        // R and LD as one branch and a select (CTUD has both levels: two branches on them
-        // cost 0.1-0.2 ns more per step on the square waves of `benches/peers`).
-        let cv = if r | ld {
-            core::hint::select_unpredictable(r, T::ZERO, input.pv)
-        } else if up != down {
-            if up {
-                v.saturating_inc()
-            } else {
-                v.saturating_dec()
+        let cv = match kind {
+            CounterKind::Ctu | CounterKind::Ctd => {
+                let stepped = select(up, v.saturating_inc(), v.saturating_dec());
+                let counted = select(up != down, stepped, v);
+                select(r, T::ZERO, select(ld, input.pv, counted))
             }
-        } else {
-            v
+            // R and LD as one branch and a select (two branches on them cost 0.1-0.2 ns more
+            // per step on the square waves of `benches/peers`).
+            CounterKind::Ctud => {
+                if r | ld {
+                    select(r, T::ZERO, input.pv)
+                } else if up != down {
+                    if up {
+                        v.saturating_inc()
+                    } else {
+                        v.saturating_dec()
+                    }
+                } else {
+                    v
+                }
+            }
         };
         self.cv = cv;
         outputs(cv, input.pv)
