@@ -463,6 +463,7 @@ pub fn prop_s5_run_stop_run(
 /// restart, retentive or not: 38 880 cases.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_s5_run_stop_run() {
     let tvs: Vec<S5Time> = [0x0001u16, 0x0002, 0x0050, 0x0999, 0x1001, 0x2001, 0x3001]
         .into_iter()
@@ -565,6 +566,7 @@ pub fn prop_s5_counter_run_stop_run(state: S5CounterState, retentive: bool) {
 /// retentive or not.
 #[cfg(not(kani))]
 #[test]
+#[covers]
 fn exhaustive_s5_counter_run_stop_run() {
     check_ids(&["SC-RETAIN-01"], || {
         for cv in [0u16, 1, 2, 998, 999] {
