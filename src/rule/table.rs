@@ -77,7 +77,7 @@ pub enum Rule {
     IEC_EXPIRY_01,
     /// IEC-ET-RANGE-01 (`spec/requirements/iec.toml`): 0 \<= ET \<= PT always; PT is a non-negative TIME; a negative PT is taken as 0 when the instruction executes.
     IEC_ET_RANGE_01,
-    /// IEC-PT0-01 (`spec/requirements/iec.toml`): PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.
+    /// IEC-PT0-01 (`spec/requirements/iec.toml`): PT = 0 (or negative) at the box is a preset like any other, never a reset: the outputs are those the other rules give with PT = 0 (TOF's Q is 1 while IN = 1; a running timer keeps its latched PT). The starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.
     IEC_PT0_01,
     /// IEC-WRAP-01 (`spec/requirements/iec.toml`): Elapsed time is computed as now - START modulo 2^32 on the free-running CPU millisecond clock: a timer started before the clock wraps expires correctly after it, and any gap between two updates shorter than 2^32 ms (about 49.7 days) gives the exact elapsed time, gaps of 2^31 ms and more included. A gap of 2^32 ms or more is indistinguishable from a gap 2^32 ms shorter, as on the CPU.
     IEC_WRAP_01,
@@ -113,7 +113,7 @@ pub enum Rule {
     CNT_EDGE_01,
     /// CNT-PRIO-01 (`spec/requirements/counter.toml`): R and LD are levels with priority R \> LD \> counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.
     CNT_PRIO_01,
-    /// CNT-SAT-01 (`spec/requirements/counter.toml`): CV saturates at the type's limits: counting up at MAX and down at MIN leave CV unchanged; it never wraps and never panics.
+    /// CNT-SAT-01 (`spec/requirements/counter.toml`): CV saturates at the type's limits and only there: counting up goes on past PV and counting down goes on below 0 (signed types), up to MAX and down to MIN, where a count leaves CV unchanged; it never wraps and never panics.
     CNT_SAT_01,
     /// CNT-SIMUL-01 (`spec/requirements/counter.toml`): A rising CU and a rising CD in the same call leave CV unchanged.
     CNT_SIMUL_01,
@@ -381,7 +381,7 @@ impl Rule {
             Rule::IEC_PT_LATCH_01 => "While a timer runs, a change of PT at the box has no effect: the preset is latched at the start (TONR: when it resumes).",
             Rule::IEC_EXPIRY_01 => "Expiry is at ET >= PT: ET stops at PT; TON's and TONR's Q rise in the update where ET reaches PT; TP's Q is 1 only while ET < PT; TOF's Q falls when ET reaches PT.",
             Rule::IEC_ET_RANGE_01 => "0 <= ET <= PT always; PT is a non-negative TIME; a negative PT is taken as 0 when the instruction executes.",
-            Rule::IEC_PT0_01 => "PT = 0 (or negative): the starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.",
+            Rule::IEC_PT0_01 => "PT = 0 (or negative) at the box is a preset like any other, never a reset: the outputs are those the other rules give with PT = 0 (TOF's Q is 1 while IN = 1; a running timer keeps its latched PT). The starting call itself updates, so TON's Q is 1 in that call, TP gives no pulse, and TOF's Q falls in the call of the falling edge.",
             Rule::IEC_WRAP_01 => "Elapsed time is computed as now - START modulo 2^32 on the free-running CPU millisecond clock: a timer started before the clock wraps expires correctly after it, and any gap between two updates shorter than 2^32 ms (about 49.7 days) gives the exact elapsed time, gaps of 2^31 ms and more included. A gap of 2^32 ms or more is indistinguishable from a gap 2^32 ms shorter, as on the CPU.",
             Rule::IEC_ACCESS_01 => "A timer is updated when and only when its instruction executes or an instruction reads the structure's Q or ELAPSED member; a read performs the update first.",
             Rule::TP_IN_01 => "TP: a rising IN starts a pulse of PT when none runs; changing IN while it runs has no effect; after the pulse ET stays at PT while IN = 1 and returns to 0 when IN = 0.",
@@ -399,7 +399,7 @@ impl Rule {
             Rule::IEC_EQUIV_02 => "From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC_TIMER; every state on the way is valid (ET <= PT).",
             Rule::CNT_EDGE_01 => "CU and CD count on a change from 0 to 1; their edge memories take the input on every call, also while R or LD holds, so releasing R with CU held does not count.",
             Rule::CNT_PRIO_01 => "R and LD are levels with priority R > LD > counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.",
-            Rule::CNT_SAT_01 => "CV saturates at the type's limits: counting up at MAX and down at MIN leave CV unchanged; it never wraps and never panics.",
+            Rule::CNT_SAT_01 => "CV saturates at the type's limits and only there: counting up goes on past PV and counting down goes on below 0 (signed types), up to MAX and down to MIN, where a count leaves CV unchanged; it never wraps and never panics.",
             Rule::CNT_SIMUL_01 => "A rising CU and a rising CD in the same call leave CV unchanged.",
             Rule::CNT_Q_01 => "QU (CTU's Q) = CV >= PV; QD (CTD's Q) = CV <= 0; counting goes on past PV.",
             Rule::CNT_INPUTS_01 => "CTU has CU, R, PV; CTD has CD, LD, PV; CTUD has all four. Inputs an instruction does not have are taken as 0.",
