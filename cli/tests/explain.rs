@@ -7,7 +7,7 @@
 //! difference at the deviating row and name the requirement that decides it.
 
 use plc_timers::catalog::Block;
-use plc_timers::rule::Rule;
+use plc_timers::rule::{Explained, Rule};
 use plc_timers_cli::trace::{check, run_explained, BlockSpec, Why};
 
 /// Checks `trace` against the reference of `block`, comparing `outputs` (all when `None`),
@@ -326,4 +326,179 @@ fn matiec_ctud_stopping_at_zero() {
                  0,1,0,0,3,0,1,0\n";
     let w = why(Block::Ctud, Some(&["CV"]), trace, 5);
     decided_at_row(&w, Rule::CNT_SAT_01);
+}
+
+/// One row of a generated trace: its CSV inputs, and the reference's explained call on them
+/// (driven here directly through the library, not through `check`).
+struct Driven {
+    inputs: String,
+    explained: Explained<Vec<i128>>,
+}
+
+/// The rows of a random trace of `block` (TON, S_ODT or CTUD) from `seed`, each with the
+/// reference's outputs and explanation.
+fn driven(block: Block, seeds: &[(u16, u8)]) -> (String, Vec<Driven>) {
+    use plc_timers::counter::{CounterInput, CounterKind, CounterRef};
+    use plc_timers::iec::{IecInput, IecKind, IecTimerRef};
+    use plc_timers::s5::{S5Input, S5Kind, S5TimerRef};
+    use plc_timers::time::{CpuTime, S5Time, Time};
+    let mut t = 0u64;
+    let mut ton = IecTimerRef::<u32>::new();
+    let mut odt = S5TimerRef::new();
+    let mut ctud = CounterRef::<i16>::new();
+    let mut rows = Vec::new();
+    for &(step, bits) in seeds {
+        let b = |i: u8| bits >> i & 1 != 0;
+        let map = |e: Explained<[i128; 3]>| Explained {
+            output: e.output.to_vec(),
+            outputs: e.outputs,
+            state: e.state,
+            written: e.written,
+        };
+        let (inputs, explained) = match block {
+            Block::Ton => {
+                t += u64::from(step % 300);
+                let pt = [0, 50, 100, 200][usize::from(bits >> 1 & 3)];
+                let input = IecInput::new(b(0), Time::from_millis(pt));
+                let e = ton.call_explained(IecKind::Ton, CpuTime::from_millis(t), input);
+                let o = [i128::from(e.output.q), i128::from(e.output.et), 0];
+                (
+                    format!("{t},{},T#{pt}MS", u8::from(b(0))),
+                    map(Explained {
+                        output: o,
+                        outputs: e.outputs,
+                        state: e.state,
+                        written: e.written,
+                    }),
+                )
+            }
+            Block::SOdt => {
+                t += u64::from(step % 40);
+                let units = [0u16, 2, 5][usize::from(bits >> 2 & 3) % 3];
+                let tv = S5Time::new(units, plc_timers::time::TimeBase::Ms10).expect("valid");
+                // R rarely: one row in four at most.
+                let r = b(1) && b(4);
+                let e = odt.call_explained(
+                    S5Kind::SOdt,
+                    CpuTime::from_millis(t),
+                    S5Input::new(b(0), r, tv),
+                );
+                let o = [
+                    i128::from(e.output.q),
+                    i128::from(e.output.bi),
+                    i128::from(e.output.bcd),
+                ];
+                (
+                    format!(
+                        "{t},{},{},S5T#{}MS",
+                        u8::from(b(0)),
+                        u8::from(r),
+                        u32::from(units) * 10
+                    ),
+                    map(Explained {
+                        output: o,
+                        outputs: e.outputs,
+                        state: e.state,
+                        written: e.written,
+                    }),
+                )
+            }
+            _ => {
+                let pv = [0i16, 2, 3][usize::from(step % 3)];
+                let (r, ld) = (b(2) && b(4), b(3) && b(5));
+                let input = CounterInput {
+                    cu: b(0),
+                    cd: b(1),
+                    r,
+                    ld,
+                    pv,
+                };
+                let e = ctud.call_explained(CounterKind::Ctud, input);
+                let o = [
+                    i128::from(e.output.qu),
+                    i128::from(e.output.qd),
+                    i128::from(e.output.cv),
+                ];
+                let f = |x: bool| u8::from(x);
+                (
+                    format!("{},{},{},{},{pv}", f(b(0)), f(b(1)), f(r), f(ld)),
+                    map(Explained {
+                        output: o,
+                        outputs: e.outputs,
+                        state: e.state,
+                        written: e.written,
+                    }),
+                )
+            }
+        };
+        rows.push(Driven { inputs, explained });
+    }
+    let header = match block {
+        Block::Ton => "t_ms,IN,PT,Q,ET",
+        Block::SOdt => "t_ms,S,R,TV,Q,BI,BCD",
+        _ => "CU,CD,R,LD,PV,QU,QD,CV",
+    };
+    (header.to_string(), rows)
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+
+    /// CLI-CHECK-02, the earlier row as `spec/cli.md` defines it: a trace with the reference's
+    /// outputs, one cell changed at row `n`, is checked; `check` names at the row the rules that
+    /// determined the output there, and as the earlier row the latest row k < n whose call
+    /// wrote the output (none when no row did), with the rules that determined it there (and
+    /// those that acted on the state there when row n wrote the output as well). And
+    /// what makes that row the one whose rules still determine the output: the reference's
+    /// value of the output is the same at k and at every row up to n - 1 (no row between wrote
+    /// it), an oracle from the outputs alone.
+    #[test]
+    fn check_names_the_latest_row_that_wrote_the_output(
+        which in 0usize..3,
+        seeds in proptest::collection::vec((proptest::prelude::any::<u16>(), proptest::prelude::any::<u8>()), 1..30),
+        at in proptest::prelude::any::<proptest::sample::Index>(),
+        output in 0usize..3,
+    ) {
+        let block = [Block::Ton, Block::SOdt, Block::Ctud][which];
+        let n_outputs = block.outputs().len();
+        let o = output % n_outputs;
+        let (header, rows) = driven(block, &seeds);
+        let n = at.index(rows.len());
+        let mut text = format!("{header}\n");
+        for (k, row) in rows.iter().enumerate() {
+            let mut values: Vec<i128> = row.explained.output[..n_outputs].to_vec();
+            if k == n {
+                // A boolean flips; an integer goes one up.
+                values[o] = if block.outputs()[o].name().starts_with('Q') { 1 - values[o] } else { values[o] + 1 };
+            }
+            let cells: Vec<String> = values
+                .iter()
+                .enumerate()
+                .map(|(i, v)| if block == Block::SOdt && i == 2 { format!("W#16#{v:04X}") } else { v.to_string() })
+                .collect();
+            text.push_str(&format!("{},{}\n", row.inputs, cells.join(",")));
+        }
+        let report = check(BlockSpec::new(block), None, None, text.as_bytes()).expect("well-formed");
+        let d = report.difference.expect("the changed cell differs");
+        proptest::prop_assert_eq!(d.line, n as u64 + 2, "CLI-CHECK-02: the changed row\n{}", text);
+        proptest::prop_assert_eq!(d.why.rules, rows[n].explained.outputs[o], "CLI-CHECK-02: the rules at the row");
+        let k = (0..n).rev().find(|&k| rows[k].explained.written & (1 << o) != 0);
+        // When row n wrote the output too, the rules that acted on the state at k are named.
+        let wrote_n = rows[n].explained.written & (1 << o) != 0;
+        let expected = k.map(|k| {
+            let e = &rows[k].explained;
+            (k as u64 + 2, if wrote_n { e.outputs[o].union(e.state) } else { e.outputs[o] })
+        });
+        proptest::prop_assert_eq!(d.why.earlier, expected, "CLI-CHECK-02: the earlier row\n{}", text);
+        // CTUD's QU and QD are derived from CV and the PV of the row: only CV is carried.
+        let carried = !(block == Block::Ctud && o < 2);
+        if let (Some(k), true) = (k, carried) {
+            for j in k + 1..n {
+                proptest::prop_assert_eq!(
+                    rows[j].explained.output[o], rows[k].explained.output[o],
+                    "CLI-CHECK-02: no row after the earlier one changed the output\n{}", text
+                );
+            }
+        }
+    }
 }

@@ -617,9 +617,11 @@ pub struct Why {
     pub rules: RuleSet,
     /// The earlier row: the latest row before this one whose call wrote the output (a rule's
     /// action there set the state it is read from: a start, a set, a tick, R), with the rules
-    /// that determined the output there. No row between them wrote it, so the output's value
-    /// before this row is the one those rules gave (kept since by the rules named at the
-    /// rows between); `None` when no earlier row wrote it (its initial value).
+    /// that determined the output there, and, when this row's call wrote the output too (its
+    /// action started from the state that row left), the rules that acted on the state there.
+    /// No row between them wrote it, so the output's value before this row is the one those
+    /// rules gave (kept since by the rules named at the rows between); `None` when no earlier
+    /// row wrote it (its initial value).
     pub earlier: Option<(u64, RuleSet)>,
     /// Whether the implementation explains its calls (the optimized forms do not: check
     /// against the reference, without `--optimized`, to see the rules).
@@ -809,9 +811,9 @@ fn check_family<F: Adapter, R: Read>(
     let mut engine = Engine::new(family, &header, Mode::WithOutputs, preset)?;
     engine.explain = true;
     let explained = engine.family.explains();
-    // Per output (catalog order), the latest row whose call wrote it: its line and the rules
-    // that determined the output there.
-    let mut wrote: [Option<(u64, RuleSet)>; RULE_OUTPUTS] = [None; RULE_OUTPUTS];
+    // Per output (catalog order), the latest row whose call wrote it: its line, the rules that
+    // determined the output there and those that acted on the state there.
+    let mut wrote: [Option<(u64, RuleSet, RuleSet)>; RULE_OUTPUTS] = [None; RULE_OUTPUTS];
     // The compared columns: (column, output index), in the order of the catalog.
     let mut compared = Vec::with_capacity(chosen.len());
     for &o in &chosen {
@@ -872,11 +874,24 @@ fn check_family<F: Adapter, R: Read>(
             .iter()
             .enumerate()
             .find(|&(k, &(_, o))| found[k] != values.as_slice()[o]);
-        let (outputs, _, written) = row.rules.unwrap_or_default();
+        let (outputs, state, written) = row.rules.unwrap_or_default();
         if let Some((_, &(column, o))) = differing {
+            // When this row's action wrote the output, it started from the state the earlier
+            // row left: the rules that acted on that state there matter too (a set whose
+            // cleared memory lets a held input count here, though R decided CV there).
+            let earlier = wrote.get(o).copied().flatten().map(|(line, rules, acted)| {
+                (
+                    line,
+                    if written & (1 << o) != 0 {
+                        rules.union(acted)
+                    } else {
+                        rules
+                    },
+                )
+            });
             let why = Why {
                 rules: outputs[o],
-                earlier: wrote.get(o).copied().flatten(),
+                earlier,
                 explained,
             };
             let shown = |values: &Outputs| -> Vec<(&'static str, Value)> {
@@ -923,7 +938,7 @@ fn check_family<F: Adapter, R: Read>(
         }
         for (o, last) in wrote.iter_mut().enumerate() {
             if written & (1 << o) != 0 {
-                *last = Some((rec.line(), outputs[o]));
+                *last = Some((rec.line(), outputs[o], state));
             }
         }
     }
