@@ -7,7 +7,12 @@
 //! - **sound**: every rule reported acted: its premise, written below from the requirement's
 //!   text (never from the reference's code), held in that call;
 //! - **complete**: every rule whose premise held and whose action changed an output or the
-//!   state is reported, and every output that changed has a rule.
+//!   state is reported, and every output that changed has a rule and is marked written;
+//! - **complete in what determined an output**: a rule whose premise held and that determines
+//!   an output's value in the call is reported for that output, also when the value stayed (a
+//!   running S5 timer's value and status are S5TMR-TICK-01's when no tick fell; PT <= 0 at an
+//!   IEC box is IEC-PT0-01's; a count input held at 1 decides through CNT-EDGE-01 that CV
+//!   stays). The "determines" relation below is written from the catalog's texts.
 //!
 //! Each premise is a function of the state before, the inputs and (where the text speaks of
 //! the result) the state after. The drivers enumerate the same small scopes as the families'
@@ -60,12 +65,16 @@ fn complete(rule: Rule, acted: bool, reported: RuleSet, case: &dyn Debug) {
     );
 }
 
-/// Every output that changed has a deciding rule; `id` is the requirement that defines the
-/// family's outputs.
+/// Every output that changed has a deciding rule and is marked written (the earlier row of
+/// `check` relies on it), except the outputs of `derived`, which an input derives from the
+/// state (a counter's Q from CV and PV: a new PV changes it with nothing written); and a
+/// written output has a deciding rule. `id` is the requirement that defines the family's
+/// outputs.
 fn every_change_decided<O: Debug>(
     id: &str,
     e: &Explained<O>,
     changed: [bool; 3],
+    derived: &[usize],
     case: &dyn Debug,
 ) {
     for (i, c) in changed.into_iter().enumerate() {
@@ -73,7 +82,32 @@ fn every_change_decided<O: Debug>(
             !c || !e.outputs[i].is_empty(),
             "{id}: output {i} changed with no deciding rule in {case:?} ({e:?})"
         );
+        assert!(
+            !c || e.wrote(i) || derived.contains(&i),
+            "{id}: output {i} changed but is not marked written in {case:?} ({e:?})"
+        );
+        assert!(
+            !e.wrote(i) || !e.outputs[i].is_empty(),
+            "{id}: output {i} written with no deciding rule in {case:?} ({e:?})"
+        );
     }
+}
+
+/// Completeness in the new sense: `rule` determined output `o` (its premise held and the
+/// output's value follows from it, changed or not), so it is reported for `o`.
+fn determined<O: Debug>(
+    rule: Rule,
+    o: usize,
+    determines: bool,
+    e: &Explained<O>,
+    case: &dyn Debug,
+) {
+    assert!(
+        !determines || e.outputs[o].contains(rule),
+        "{}: determined output {o} but is not reported for it in {case:?}: {:?}",
+        rule.id(),
+        e.outputs[o]
+    );
 }
 
 /// Runs `body` on each of the two halves of `kinds`, one thread each, requires every cover the
@@ -128,8 +162,10 @@ fn s5_premise(c: &S5Case, rule: Rule) -> bool {
         S5Kind::SOffdt => Rule::SF_Q_01,
     };
     match rule {
-        // A running timer with a value loses units to ticks.
-        Rule::S5TMR_TICK_01 => st.running && st.value > 0 && c.ticks > 0,
+        // A running timer with a value: the ticks in (t_prev, t], none or more, decide it.
+        Rule::S5TMR_TICK_01 => st.running && st.value > 0,
+        // BI and BCD are the value as L and LC read it, at every execution.
+        Rule::S5TMR_LOAD_01 => true,
         // The value reached 0 (by ticks, or a start with 0 found at this execution).
         Rule::S5TMR_EXPIRE_01 => st.running && (c.ticks >= u64::from(st.value) || st.value == 0),
         // A timer started with 0: in its starting execution, or found run out at the next.
@@ -157,9 +193,9 @@ fn s5_premise(c: &S5Case, rule: Rule) -> bool {
 fn s5_changes(c: &S5Case, rule: Rule, before: &S5State, after: &S5State) -> bool {
     let i = c.input;
     match rule {
-        // A rule with these premises always changes something: ticks take units off, expiry
-        // and a stop stop the timer.
-        Rule::S5TMR_TICK_01 | Rule::S5TMR_EXPIRE_01 | Rule::S5TMR_STOP_01 => true,
+        // Ticks take units off; expiry and a stop stop the timer.
+        Rule::S5TMR_TICK_01 => c.ticks > 0,
+        Rule::S5TMR_EXPIRE_01 | Rule::S5TMR_STOP_01 => true,
         Rule::S5TMR_ZERO_01 => before.running && before.value == 0,
         // R as a level: while R = 1 it decides every output, whatever the state was.
         Rule::S5TMR_R_01 => true,
@@ -214,13 +250,41 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
     ];
     if c.input.r {
         for (i, o) in e.outputs.iter().enumerate() {
+            // BI and BCD are the cleared value as L and LC read it.
+            let load = RuleSet::EMPTY.with_if(i > 0, Rule::S5TMR_LOAD_01);
             assert_eq!(
                 *o,
-                RuleSet::of(Rule::S5TMR_R_01),
+                load.with(Rule::S5TMR_R_01),
                 "S5TMR-R-01: R decides output {i} alone in {c:?}"
             );
         }
     }
+    // What determined the outputs, changed or not (from the texts of S5TMR-TICK-01 and
+    // S5TMR-LOAD-01): a running timer's value is the ticks' unless a start or R writes it; its
+    // status too, unless the ticks ran it out, S stopped it or S_OFFDT's rising S set it.
+    let at = seen(c.state, c.ticks);
+    let (st, i) = (c.state, c.input);
+    let fr_edge = i.fr && !st.fr_prev;
+    let memory = st.s_prev && !fr_edge;
+    let rising = i.s && !memory;
+    let starts = if c.kind == S5Kind::SOffdt {
+        !i.s && memory
+    } else {
+        rising
+    };
+    let ticking = st.running && st.value > 0 && !i.r && !starts;
+    let status_kept = at.running
+        && (i.s || !matches!(c.kind, S5Kind::SPulse | S5Kind::SOdt))
+        && !(c.kind == S5Kind::SOffdt && rising);
+    cover!(
+        ticking && status_kept && c.ticks == 0,
+        "S5TMR-TICK-01 determines a value no tick changed"
+    );
+    determined(Rule::S5TMR_TICK_01, 0, ticking && status_kept, &e, &c);
+    determined(Rule::S5TMR_TICK_01, 1, ticking, &e, &c);
+    determined(Rule::S5TMR_TICK_01, 2, ticking, &e, &c);
+    determined(Rule::S5TMR_LOAD_01, 1, true, &e, &c);
+    determined(Rule::S5TMR_LOAD_01, 2, true, &e, &c);
     // An FR edge with S held clears the start memory, so S = 1 starts the timer again (every
     // kind but S_OFFDT, which starts on a falling S): the FR edge chose that start's write, and
     // Q carries it beside the edge (as `Explained` defines "decided").
@@ -253,6 +317,7 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
         "S5TMR-RANGE-01",
         &e,
         [out.q != was.q, out.bi != was.bi, out.bcd != was.bcd],
+        &[],
         &c,
     );
     for rule in Rule::ALL {
@@ -499,11 +564,19 @@ fn iec_premise<C: ClockWord>(c: &IecCase<C>, rule: Rule) -> bool {
         Rule::IEC_EDGE_01 => started || i.input != st.input,
         // The comparison ET >= PT of an update.
         Rule::IEC_EXPIRY_01 => updated,
-        // Expiry with PT = 0: latched before, or at this start.
-        Rule::IEC_PT0_01 => (st.running && st.pt == C::ZERO) || (started && c.box_pt() == C::ZERO),
-        // now - START wrapped: the clock is below START (or TONR's START shifted back below 0).
+        // Expiry with PT = 0: latched before, or at this start; or PT <= 0 at the box, a
+        // preset like any other.
+        Rule::IEC_PT0_01 => {
+            (st.running && st.pt == C::ZERO)
+                || (started && c.box_pt() == C::ZERO)
+                || i.pt.clamp_negative() == 0
+        }
+        // now - START wrapped: the clock is below START (or TONR's START shifted back below
+        // 0); or an update after the CPU time passed 2^BITS ms (the clock word has wrapped).
         Rule::IEC_WRAP_01 => {
-            (st.running && now < st.start) || (started && c.kind == IecKind::Tonr && st.et > now)
+            (st.running && now < st.start)
+                || (started && c.kind == IecKind::Tonr && st.et > now)
+                || (updated && now.to_u64() != c.now.as_millis())
         }
         // The structure records the instruction that last ran on it.
         Rule::IEC_ACCESS_01 => st.kind != Some(c.kind),
@@ -592,11 +665,29 @@ pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
             );
         }
     }
+    // What determined the outputs, changed or not: PT <= 0 at the box (IEC-PT0-01's text: a
+    // preset like any other, never a reset) decides both; a timer that was running and runs
+    // on through the call's update (no start, no reset) has Q by the comparison ET < PT
+    // (IEC-EXPIRY-01) and ET by the update (IEC-START-01), on a wrapped clock word by
+    // IEC-WRAP-01 too.
+    let pt0 = c.input.pt.clamp_negative() == 0;
+    determined(Rule::IEC_PT0_01, 0, pt0, &e, &c);
+    determined(Rule::IEC_PT0_01, 1, pt0, &e, &c);
+    let runs_on = st.running && !started && !c.resets() && after.running;
+    cover!(
+        runs_on,
+        "IEC-EXPIRY-01 determines the Q of a timer running on"
+    );
+    determined(Rule::IEC_EXPIRY_01, 0, runs_on, &e, &c);
+    determined(Rule::IEC_START_01, 1, runs_on, &e, &c);
+    let wrapped = now.to_u64() != c.now.as_millis();
+    determined(Rule::IEC_WRAP_01, 1, runs_on && wrapped, &e, &c);
     let was = (st.q, st.et);
     every_change_decided(
         "IEC-ET-RANGE-01",
         &e,
         [out.q != was.0, out.et != was.1, false],
+        &[],
         &c,
     );
     true
@@ -713,10 +804,20 @@ fn counter_premise<T: CounterInt>(
     let down = i.cd && !st.cd_prev;
     let counts = !i.r && !i.ld;
     match rule {
-        Rule::CNT_EDGE_01 => (counts && (up || down)) || i.cu != st.cu_prev || i.cd != st.cd_prev,
+        // A count on an edge, an edge memory taking a new value, or a count input held at 1
+        // that does not count.
+        Rule::CNT_EDGE_01 => {
+            (counts && (up || down))
+                || i.cu != st.cu_prev
+                || i.cd != st.cd_prev
+                || (counts && (i.cu || i.cd))
+        }
         Rule::CNT_PRIO_01 => i.r || i.ld,
+        // Saturation at the limits, or counting down below 0 (only MIN stops it).
         Rule::CNT_SAT_01 => {
-            counts && up != down && ((up && st.cv == T::MAX) || (down && st.cv == T::MIN))
+            counts
+                && up != down
+                && ((up && st.cv == T::MAX) || (down && (st.cv == T::MIN || st.cv <= T::ZERO)))
         }
         Rule::CNT_SIMUL_01 => counts && up && down,
         // Q derived from CV and PV (every call), and counting on past PV.
@@ -784,6 +885,18 @@ pub fn prop_explain_counter<T: CounterInt>(
         e.outputs[cv_at],
         &case,
     );
+    // What determined CV, changed or not: a count input held at 1 does not count (CNT-EDGE-01's
+    // text); a count down from 0 or below goes on below 0 (CNT-SAT-01's text).
+    let held = counts && !up && !down && (i.cu || i.cd);
+    cover!(held, "CNT-EDGE-01 determines a CV a held input left");
+    determined(Rule::CNT_EDGE_01, cv_at, held, &e, &case);
+    let below = counts && down && !up && st.cv <= T::ZERO;
+    // Unsigned types have MIN = 0: there the count down from 0 saturates.
+    cover!(
+        below && (st.cv != T::MIN || T::MIN == T::ZERO),
+        "CNT-SAT-01 explained: counting below 0"
+    );
+    determined(Rule::CNT_SAT_01, cv_at, below, &e, &case);
     for &q in qs {
         complete(Rule::CNT_Q_01, true, e.outputs[q], &case);
         // A Q output is CV compared with PV: whatever decided CV decided it too.
@@ -828,7 +941,7 @@ pub fn prop_explain_counter<T: CounterInt>(
         }
     }
     ch[cv_at] = out.cv != st.cv;
-    every_change_decided("CNT-Q-01", &e, ch, &case);
+    every_change_decided("CNT-Q-01", &e, ch, qs, &case);
     true
 }
 
@@ -995,6 +1108,7 @@ pub fn prop_explain_s5_counter(kind: S5CounterKind, st: S5CounterState, i: S5Cou
         "SC-Q-01",
         &e,
         [out.q != was.q, out.cv != was.cv, out.cv_bcd != was.cv_bcd],
+        &[],
         &case,
     );
     for (rule, name) in [

@@ -208,21 +208,30 @@ pub const MAX_OUTPUTS: usize = 3;
 
 /// The outputs of one explained call, with the rules that decided them.
 ///
-/// - `outputs[i]` are the rules that decided output `i` in this call, `i` being the output's
-///   index in the catalog ([`crate::catalog::Block::outputs`]: `Q, BI, BCD` for the S5 timers,
-///   `Q, ET` for the IEC timers, `Q, CV` for CTU and CTD, `QU, QD, CV` for CTUD,
-///   `Q, CV, CV_BCD` for the S5 counters). A rule decides an output when it acted in this call
-///   and the output's value comes from its action: the last rule that wrote the state the
-///   output is read from (an R after a start decides alone), with the rules that chose that
-///   write (the edge that started it, PT = 0, an FR edge), and the rule that derives the output
-///   from the state (Q = CV >= PV). An output that no rule touched in this call has no rule:
-///   its value was decided by an earlier call.
+/// - `outputs[i]` are the rules that determined output `i` in this call, `i` being the
+///   output's index in the catalog ([`crate::catalog::Block::outputs`]: `Q, BI, BCD` for the
+///   S5 timers, `Q, ET` for the IEC timers, `Q, CV` for CTU and CTD, `QU, QD, CV` for CTUD,
+///   `Q, CV, CV_BCD` for the S5 counters). A rule determines an output when its premise held in
+///   this call and the output's value follows from it, whether the value changed or stayed:
+///   the last rule that wrote the state the output is read from (an R after a start decides
+///   alone), with the rules that chose that write (the edge that started it, PT = 0, an FR
+///   edge); a rule whose premise held and that keeps the value (a running S5 timer's value and
+///   status are S5TMR-TICK-01's at every call, also when no tick fell; a running IEC timer's Q
+///   is IEC-EXPIRY-01's while ET < PT; PT <= 0 at the box is IEC-PT0-01's); and the rule that
+///   derives the output from the state (Q = CV >= PV, `L`/`LC` of the timer word). An output
+///   with no rule kept the value an earlier call gave it, and no rule's premise bears on it
+///   in this call (a stopped timer's value).
+/// - `written` has bit `i` set when a rule's action in this call wrote the state output `i` is
+///   read from (a start, a tick, an update of ET, a count, a set, R), even to the same value;
+///   an output not written carries the value of the latest call that wrote it. `check` names
+///   that call as the earlier row of a difference (see `spec/cli.md`).
 /// - `state` are the rules that acted on the state in this call (every rule whose action
 ///   changed it is there; an edge memory that takes a new value is its edge rule's action).
 ///
-/// Both are proven sound (a rule given acted: its premise held), complete (a rule that acted and
-/// changed an output or the state is given) and faithful (the explained call gives the outputs
-/// and state of `call`), for every family, in `proofs/explain.rs`.
+/// All are proven sound (a rule given acted or kept: its premise held), complete (a rule that
+/// acted and changed an output or the state is given, and a rule whose premise held and that
+/// determines an output's value is given for that output) and faithful (the explained call
+/// gives the outputs and state of `call`), for every family, in `proofs/explain.rs`.
 ///
 /// ```
 /// use plc_timers::counter::s5::{S5CounterInput, S5CounterKind, S5CounterRef};
@@ -243,9 +252,25 @@ pub struct Explained<O> {
     pub outputs: [RuleSet; MAX_OUTPUTS],
     /// The rules that acted on the state in this call.
     pub state: RuleSet,
+    /// Bit `i`: a rule's action in this call wrote the state that output `i` is read from.
+    pub written: u8,
 }
 
 impl<O> Explained<O> {
+    /// Whether a rule's action in this call wrote output `i` (see [`Explained`]).
+    ///
+    /// ```
+    /// use plc_timers::counter::{CounterInput, CounterKind, CounterRef};
+    /// let mut ctu = CounterRef::<i16>::new();
+    /// let e = ctu.call_explained(CounterKind::Ctu, CounterInput { cu: true, ..Default::default() });
+    /// assert!(e.wrote(1)); // CV: counted
+    /// let e = ctu.call_explained(CounterKind::Ctu, CounterInput { cu: true, ..Default::default() });
+    /// assert!(!e.wrote(1)); // CU held: CV carried
+    /// ```
+    pub const fn wrote(&self, i: usize) -> bool {
+        i < MAX_OUTPUTS && self.written & (1 << i) != 0
+    }
+
     /// Every rule given: of the outputs and of the state.
     ///
     /// ```
@@ -256,6 +281,38 @@ impl<O> Explained<O> {
     /// ```
     pub fn rules(&self) -> RuleSet {
         self.outputs.iter().fold(self.state, |all, o| all.union(*o))
+    }
+
+    /// This operation followed by `next` on the same instance in the same scan (the RT coil
+    /// before the box, a read after it), as one explanation: an output `next` wrote is decided
+    /// by `next`'s rules alone; one it did not write keeps what decided it here, with
+    /// `next`'s rules that kept it. `next`'s outputs are the result's.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    /// let pt = plc_timers::time!("T#100MS");
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call_explained(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, pt));
+    /// let rt = ton.reset_timer_explained();
+    /// let e = rt.then(ton.call_explained(IecKind::Ton, CpuTime::from_millis(10), IecInput::new(false, pt)));
+    /// assert!(e.outputs[0].contains(Rule::TON_IN_01) && !e.outputs[0].contains(Rule::IEC_RT_01));
+    /// assert!(e.state.contains(Rule::IEC_RT_01));
+    /// ```
+    pub fn then<P>(self, next: Explained<P>) -> Explained<P> {
+        let mut outputs = next.outputs;
+        for (i, o) in outputs.iter_mut().enumerate() {
+            if !next.wrote(i) {
+                *o = o.union(self.outputs[i]);
+            }
+        }
+        Explained {
+            output: next.output,
+            outputs,
+            state: self.state.union(next.state),
+            written: self.written | next.written,
+        }
     }
 }
 
@@ -278,9 +335,13 @@ pub(crate) trait Recorder {
     /// `rules` acted on the state and now decide the outputs of `outputs` (a mask of
     /// [`out`]), replacing what decided them before in this call.
     fn write(&mut self, rules: RuleSet, outputs: u8);
-    /// `rules` also decide the outputs of `outputs` (a premise of a write, or a derivation of
-    /// the output from the state), beside what decides them already.
+    /// `rules` also decide the outputs of `outputs` (a premise of a write, a rule that keeps
+    /// their value, or a derivation of the output from the state), beside what decides them
+    /// already.
     fn add(&mut self, rules: RuleSet, outputs: u8);
+    /// `rules` acted on the state and updated the outputs of `outputs` (ET following the
+    /// clock), beside what decides them already.
+    fn update(&mut self, rules: RuleSet, outputs: u8);
     /// `rules` acted on the state, deciding no output.
     fn state(&mut self, rules: RuleSet);
 }
@@ -291,6 +352,8 @@ impl Recorder for () {
     #[inline(always)]
     fn add(&mut self, _: RuleSet, _: u8) {}
     #[inline(always)]
+    fn update(&mut self, _: RuleSet, _: u8) {}
+    #[inline(always)]
     fn state(&mut self, _: RuleSet) {}
 }
 
@@ -299,6 +362,7 @@ impl Recorder for () {
 pub(crate) struct Explanation {
     pub outputs: [RuleSet; MAX_OUTPUTS],
     pub state: RuleSet,
+    pub written: u8,
 }
 
 impl Explanation {
@@ -317,6 +381,7 @@ impl Explanation {
             output,
             outputs: self.outputs,
             state: self.state,
+            written: self.written,
         }
     }
 }
@@ -324,10 +389,16 @@ impl Explanation {
 impl Recorder for Explanation {
     fn write(&mut self, rules: RuleSet, outputs: u8) {
         self.state = self.state.union(rules);
+        self.written |= outputs;
         Self::each(outputs, |i| self.outputs[i] = rules);
     }
     fn add(&mut self, rules: RuleSet, outputs: u8) {
         Self::each(outputs, |i| self.outputs[i] = self.outputs[i].union(rules));
+    }
+    fn update(&mut self, rules: RuleSet, outputs: u8) {
+        self.state = self.state.union(rules);
+        self.written |= outputs;
+        self.add(rules, outputs);
     }
     fn state(&mut self, rules: RuleSet) {
         self.state = self.state.union(rules);

@@ -62,10 +62,14 @@ impl Both {
     fn rt(&mut self) {
         let mut plain = self.reference;
         plain.reset_timer();
-        let rules = self.reference.reset_timer_explained();
+        let e = self.reference.reset_timer_explained();
         assert_eq!(
-            rules,
-            RuleSet::of(Rule::IEC_RT_01),
+            (e.state, e.outputs[0], e.outputs[1]),
+            (
+                RuleSet::of(Rule::IEC_RT_01),
+                RuleSet::of(Rule::IEC_RT_01),
+                RuleSet::of(Rule::IEC_RT_01)
+            ),
             "IEC-RT-01: the coil's rules"
         );
         assert_eq!(self.reference, plain, "IEC-RT-01: explained coil = coil");

@@ -1,8 +1,9 @@
 """The deviations of awlsim from the reference that `spec/` documents: the one list.
 
-``check`` names the requirements that decided the *reference's* output at the first differing
-row, and the earlier row where the rules that still matter there acted (the start, the set, the
-latch of PT). Each entry says which documented requirement awlsim departs from, where `spec/`
+``check`` names the requirements that determined the *reference's* output at the first
+differing row, and the earlier row: the latest row that wrote that output (the start, the set,
+R), with the rules that determined it there (and those that acted on the state there, when the
+differing row wrote the output too). Each entry says which documented requirement awlsim departs from, where `spec/`
 documents awlsim's behaviour (a file and words that must occur on one line of it with the
 requirement's ID and "awlsim"; the runner verifies this against the tree), and when a
 difference is this deviation: a predicate on the first differing row (its column, ``check``'s
@@ -126,8 +127,7 @@ def _odt_restart(c: Case) -> bool:
 def _set_with_count_held(c: Case) -> bool:
     """check names the set (SC-SET-01), and a set (rising S, or S with a rising FR) found CU or
     CD at 1, that input held since. The name alone is not enough: check also names the set when
-    a count input that rose again after it is miscounted. And check's earlier row is not always
-    that set: after a set with S held and a rising FR it names the first set's row."""
+    a count input that rose again after it is miscounted."""
     if c.block not in S5_COUNTERS or "SC-SET-01" not in c.named:
         return False
     n = len(c.rows)
@@ -162,7 +162,8 @@ def _pt_changed(c: Case) -> bool:
 def _clock_wrap(c: Case) -> bool:
     """2^31 ms or more between the earlier row (the start) and the differing row: awlsim's
     31-bit clock aliases the gap. check names IEC-WRAP-01 only where the reference's own
-    32-bit clock wraps (TOF's long gaps), not for TP's and TON's, so the gap is the test."""
+    32-bit clock wraps or the CPU time has passed 2^32 ms, not for a gap of 2^31 ms before
+    that, so the gap is the test."""
     j = c.earlier_index
     return (c.block in ("TP", "TON", "TOF") and j is not None
             and int(c.row["t_ms"]) - int(c.rows[j]["t_ms"]) >= 2**31)

@@ -8,8 +8,8 @@
     ``Difference`` (``line`` counts CSV lines, the header is line 1; ``column``, 1-based;
     ``output``, its name; ``expected``; ``actual``; ``rules``, the requirement IDs that decided
     that output at the row (empty when none acted on it there); ``earlier_line`` and
-    ``earlier_rules``, the latest earlier row where rules acted on state that still matters
-    there, and those rules (None and empty when there is none; from the command, less those
+    ``earlier_rules``, the latest earlier row that wrote that output, and the rules that
+    determined it there (None and empty when there is none; from the command, less those
     already in ``rules``, which it does not repeat); ``message``, the whole text), or None.
 
 Both come from the Python package ``plc_timers`` when it is importable (the bindings of the

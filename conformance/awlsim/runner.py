@@ -60,9 +60,8 @@ def named_text(key: tuple) -> str:
     return text + (f", after an earlier row: {' + '.join(earlier)}" if earlier else "")
 
 
-def classify(block: str, rows: list, got: list, diff) -> tuple:
-    """The group of a trace's first difference: (the documented deviation's requirement, or
-    None, and check's rules)."""
+def case_of(block: str, rows: list, got: list, diff) -> deviations.Case:
+    """The first differing row of a trace as the deviations' predicates see it."""
     i = diff.line - 1  # rows[i - 1] is the differing row
     want = reference.run(block, rows[:i], **preset_kw(block))
     column = next(c for c in want[-1] if want[-1][c] != got[i - 1][c])
@@ -71,9 +70,22 @@ def classify(block: str, rows: list, got: list, diff) -> tuple:
                              f"output is {column}")
     at_row, earlier = key_of(diff)
     j = None if diff.earlier_line is None else diff.earlier_line - 2
-    case = deviations.Case(block, rows[:i], got[:i], want, column.upper(), at_row, earlier, j)
-    dev = deviations.classify(case)
+    return deviations.Case(block, rows[:i], got[:i], want, column.upper(), at_row, earlier, j)
+
+
+def classify(block: str, rows: list, got: list, diff) -> tuple:
+    """The group of a trace's first difference: (the documented deviation's requirement, or
+    None, and check's rules)."""
+    dev = deviations.classify(case_of(block, rows, got, diff))
     return (dev.name if dev else None, key_of(diff))
+
+
+def names_deciding(block: str, rows: list, got: list, diff):
+    """Whether check names the requirement of the documented deviation at the first difference
+    (at the row or at the earlier row), or None when no deviation explains it."""
+    case = case_of(block, rows, got, diff)
+    dev = deviations.classify(case)
+    return None if dev is None else dev.rule in case.named
 
 
 def group_key(cls: tuple) -> tuple:
@@ -139,6 +151,7 @@ class BlockStats:
     rows: int = 0
     differing_rows: int = 0
     differing_traces: int = 0
+    named: int = 0  # differing traces where check names the deviation's requirement
 
 
 def fmt(col: str, v) -> str:
@@ -171,6 +184,9 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=26)
     ap.add_argument("--report", type=Path, default=REPO / "docs" / "conformance" / "awlsim.md")
     ap.add_argument("--blocks", default=",".join(traces.BLOCKS))
+    ap.add_argument("--named", action="store_true",
+                    help="also print, per block, how often check names the documented "
+                         "deviation's requirement at the first difference (not in the report)")
     args = ap.parse_args(argv)
 
     bad = deviations.verify(REPO)
@@ -214,6 +230,9 @@ def main(argv=None) -> int:
                   f"(run: line {first + 2}, check: {d})", file=sys.stderr)
             return 1
         cls = classify(block, rows, got, d)
+        if args.named:
+            hit = names_deciding(block, rows, got, d)
+            st.named += hit is True
         key = group_key(cls)
         g = groups.setdefault((block, key), Group(block, key))
         sub = g.by_rules.setdefault(cls[1], [0, 0])
@@ -235,6 +254,16 @@ def main(argv=None) -> int:
         st = stats[block]
         print(f"{block:8} {st.traces:4} traces {st.rows:6} rows, {st.differing_rows:5} rows "
               f"differ in {st.differing_traces} traces")
+    if args.named:
+        total = sum(stats[b].differing_traces for b in blocks)
+        named = sum(stats[b].named for b in blocks)
+        for block in blocks:
+            st = stats[block]
+            if st.differing_traces:
+                print(f"named {block:8} {st.named:4} of {st.differing_traces:4} "
+                      f"({100 * st.named / st.differing_traces:.1f} %)")
+        if total:
+            print(f"named overall  {named} of {total} ({100 * named / total:.1f} %)")
     for g in groups.values():
         name = g.key[0] or "NOT DOCUMENTED (check: " + named_text(g.key[1]) + ")"
         print(f"  {g.block:8} {name}: {g.traces} traces, {g.rows} rows, minimal trace "

@@ -89,13 +89,13 @@ class AdapterTest(unittest.TestCase):
 
     def test_the_command_and_the_package_name_the_same_rules(self):
         # The command's text, read by the fallback, gives what the package's fields give (the
-        # command does not repeat at the earlier row a rule named at the row).
+        # command does not repeat at the earlier row a rule named at the row). The earlier row
+        # is the latest that wrote ET: the start.
         rows = [{"t_ms": 0, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 0},
-                {"t_ms": 200, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 200},
-                {"t_ms": 300, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 301}]
+                {"t_ms": 200, "IN": 1, "PT": "T#500ms", "Q": 0, "ET": 201}]
         cli = reference._cli_check("TON", rows, tv=None, pt=None, pv=None, type="INT",
                                    optimized=False)
-        self.assertEqual((cli.line, cli.output, cli.earlier_line), (4, "ET", 2))
+        self.assertEqual((cli.line, cli.output, cli.earlier_line), (3, "ET", 2))
         self.assertTrue(cli.rules and cli.earlier_rules)
         d = reference.check("TON", rows)
         self.assertEqual((d.line, list(d.rules), d.earlier_line), (cli.line, cli.rules, 2))

@@ -71,7 +71,7 @@ impl<T: CounterInt> CounterRef<T> {
     }
 
     /// CNT-SIMUL-01: rising CU and CD in the same call leave CV unchanged; CNT-SAT-01: counting
-    /// stops at the type's limits, it never wraps.
+    /// stops at the type's limits only (up past PV, down below 0), it never wraps.
     fn count(cv: T, up: bool, down: bool) -> T {
         match (up, down) {
             (true, false) => cv.saturating_inc(),
@@ -104,6 +104,10 @@ impl<T: CounterInt> CounterRef<T> {
             }
         } else {
             let counted = Self::count(cv, up, down);
+            if !(up || down) && (input.cu || input.cd) {
+                // A count input held at 1 does not count: its edge memory decides CV.
+                rec.add(RuleSet::of(Rule::CNT_EDGE_01), all);
+            }
             if up || down {
                 let edge = RuleSet::of(Rule::CNT_EDGE_01);
                 rec.write(
@@ -111,6 +115,8 @@ impl<T: CounterInt> CounterRef<T> {
                         edge.with(Rule::CNT_SIMUL_01)
                     } else {
                         edge.with_if(counted == cv, Rule::CNT_SAT_01)
+                            // Counting down goes on below 0: only the type's MIN stops it.
+                            .with_if(down && counted < T::ZERO, Rule::CNT_SAT_01)
                             // Counting up goes on past PV.
                             .with_if(up && cv >= input.pv, Rule::CNT_Q_01)
                     },
@@ -136,8 +142,9 @@ impl<T: CounterInt> CounterRef<T> {
     /// assert_eq!(e.outputs[2].iter().collect::<Vec<_>>(), [Rule::CNT_PRIO_01]); // CV: R
     /// assert!(e.state.contains(Rule::CNT_EDGE_01)); // the CU memory took the input
     /// let e = ctud.call_explained(CounterKind::Ctud, CounterInput { cu: true, ..Default::default() });
-    /// assert_eq!(e.output.cv, 0); // releasing R with CU held does not count
-    /// assert!(e.outputs[2].is_empty());
+    /// assert_eq!(e.output.cv, 0); // releasing R with CU held does not count:
+    /// assert_eq!(e.outputs[2].iter().collect::<Vec<_>>(), [Rule::CNT_EDGE_01]); // the memory decided
+    /// assert!(!e.wrote(2)); // CV carried from the row under R
     /// ```
     pub fn call_explained(
         &mut self,

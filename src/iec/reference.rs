@@ -98,7 +98,14 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// latched; it stays in force while the timer runs (IEC-PT-LATCH-01).
     ///
     /// `also`: further rules that made this start (TP-RETRIGGER-01).
-    fn start(&mut self, now: C, pt: Time, kind: IecKind, also: RuleSet, rec: &mut impl Recorder) {
+    fn start(
+        &mut self,
+        now: CpuTime,
+        pt: Time,
+        kind: IecKind,
+        also: RuleSet,
+        rec: &mut impl Recorder,
+    ) {
         rec.write(
             also.with(kind_rule(kind))
                 .with(Rule::IEC_START_01)
@@ -108,7 +115,7 @@ impl<C: ClockWord> IecTimerRef<C> {
         );
         let s = &mut self.state;
         s.running = true;
-        s.start = now;
+        s.start = now.clock();
         s.pt = preset(pt);
         s.et = C::default();
         s.q = q_while_running(kind);
@@ -120,14 +127,26 @@ impl<C: ClockWord> IecTimerRef<C> {
     ///
     /// `box_pt`: the preset at the box in a box call (`None` for a read through the structure):
     /// when it differs from the latched one, the latch decided (IEC-PT-LATCH-01).
-    fn update(&mut self, now: C, kind: IecKind, box_pt: Option<Time>, rec: &mut impl Recorder) {
+    ///
+    /// IEC-WRAP-01 decides when the subtraction wraps, and whenever the CPU time has passed
+    /// 2^BITS ms: from then on the clock word is the time modulo 2^BITS, so the gap since START
+    /// is known only modulo 2^BITS (a gap of 2^BITS ms or more aliases).
+    fn update(
+        &mut self,
+        now: CpuTime,
+        kind: IecKind,
+        box_pt: Option<Time>,
+        rec: &mut impl Recorder,
+    ) {
         let s = &mut self.state;
         if !s.running {
             return;
         }
+        let t = now.as_millis();
+        let now = now.clock::<C>();
         let elapsed = now.elapsed_since(s.start);
         let rules = RuleSet::EMPTY
-            .with_if(now < s.start, Rule::IEC_WRAP_01)
+            .with_if(now < s.start || now.to_u64() != t, Rule::IEC_WRAP_01)
             .with_if(
                 box_pt.is_some_and(|pt| preset::<C>(pt) != s.pt),
                 Rule::IEC_PT_LATCH_01,
@@ -146,11 +165,16 @@ impl<C: ClockWord> IecTimerRef<C> {
         } else {
             // ET follows the clock (IEC-START-01: each update computes now - START); Q stays
             // the running one because ET < PT (IEC-EXPIRY-01).
-            rec.state(RuleSet::of(Rule::IEC_START_01));
-            rec.add(rules.with(Rule::IEC_START_01), ET);
-            rec.add(rules.with(Rule::IEC_EXPIRY_01), Q);
+            rec.update(rules.with(Rule::IEC_START_01), ET);
+            let q = q_while_running(kind);
+            if s.q == q {
+                rec.add(rules.with(Rule::IEC_EXPIRY_01), Q);
+            } else {
+                // Q of another instruction that ran on the structure before: replaced.
+                rec.update(rules.with(Rule::IEC_EXPIRY_01), Q);
+            }
             s.et = elapsed;
-            s.q = q_while_running(kind);
+            s.q = q;
         }
     }
 
@@ -158,7 +182,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// instruction that last ran on it happens first (none before the first call).
     fn access(&mut self, now: CpuTime) -> &IecState<C> {
         if let Some(kind) = self.state.kind {
-            self.update(now.clock(), kind, None, &mut ());
+            self.update(now, kind, None, &mut ());
         }
         &self.state
     }
@@ -175,7 +199,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// TP (Table 8-20: "changing PT or IN while running has no effect"): a rising IN starts a
     /// pulse of PT when no pulse runs; after the pulse ET stays at PT while IN = 1 and returns
     /// to 0 when IN = 0 (TP-ET-01).
-    fn tp(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+    fn tp(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         let was_running = self.state.running;
         self.update(now, IecKind::Tp, pt, rec);
@@ -196,7 +220,7 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// TON: a rising IN starts timing; Q = 1 once ET reaches PT while IN stays 1; IN = 0 resets
     /// and stops (Table 8-20).
-    fn ton(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+    fn ton(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if !input.input {
             rec.write(RuleSet::of(Rule::TON_IN_01), Q | ET);
@@ -211,7 +235,7 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// TOF: Q = 1 while IN = 1; a falling IN starts timing, Q falls when ET reaches PT; IN = 1
     /// resets and stops (Table 8-20).
-    fn tof(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+    fn tof(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if input.input {
             rec.write(RuleSet::of(Rule::TOF_IN_01), Q | ET);
@@ -228,7 +252,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// TONR: R resets ET and Q (TONR-R-01, before anything else); while IN = 1 the timer
     /// accumulates, resuming from the accumulated ET with the PT of the moment it resumes
     /// (TONR-RESUME-01); IN = 0 stops without reset (Table 8-20); Q stays 1 after expiry until R.
-    fn tonr(&mut self, now: C, input: IecInput, rec: &mut impl Recorder) {
+    fn tonr(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if input.reset {
             rec.write(RuleSet::of(Rule::TONR_R_01), Q | ET);
@@ -242,7 +266,7 @@ impl<C: ClockWord> IecTimerRef<C> {
                 // `now - START` is the accumulated total.
                 let accumulated = self.state.et;
                 self.start(now, input.pt, IecKind::Tonr, RuleSet::EMPTY, rec);
-                self.state.start = now.elapsed_since(accumulated);
+                self.state.start = now.clock::<C>().elapsed_since(accumulated);
             }
             self.update(now, IecKind::Tonr, pt, rec);
         } else if self.state.running {
@@ -262,7 +286,6 @@ impl<C: ClockWord> IecTimerRef<C> {
         input: IecInput,
         rec: &mut impl Recorder,
     ) -> IecOutput<C> {
-        let now = now.clock::<C>();
         match kind {
             IecKind::Tp => self.tp(now, input, rec),
             IecKind::Ton => self.ton(now, input, rec),
@@ -275,6 +298,12 @@ impl<C: ClockWord> IecTimerRef<C> {
         if self.state.kind != Some(kind) {
             rec.state(RuleSet::of(Rule::IEC_ACCESS_01));
         }
+        // PT <= 0 at the box is a preset like any other, not a reset: the outputs are what the
+        // other rules give with PT = 0 (or with the latched PT of a running timer).
+        rec.add(
+            RuleSet::EMPTY.with_if(input.pt.clamp_negative() == 0, Rule::IEC_PT0_01),
+            Q | ET,
+        );
         self.state.kind = Some(kind);
         self.state.input = input.input;
         IecOutput {
@@ -307,10 +336,18 @@ impl<C: ClockWord> IecTimerRef<C> {
         rec.finish(o)
     }
 
-    /// [`IecTimerOps::reset_timer`] (the `-(RT)-` coil), explained: the same action, and the
-    /// rules that acted on the state, [`Rule::IEC_RT_01`] (ET and Q cleared, the timer stopped,
-    /// the stored IN cleared). The coil has no box outputs of its own: the ET and Q it leaves
-    /// are what the next call or access starts from.
+    /// The outputs Q and ET as the structure holds them now.
+    fn held(&self) -> IecOutput<C> {
+        IecOutput {
+            q: self.state.q,
+            et: self.state.et,
+        }
+    }
+
+    /// [`IecTimerOps::reset_timer`] (the `-(RT)-` coil), explained as a call is: the same
+    /// action, with [`Rule::IEC_RT_01`] deciding the Q and ET the structure holds after it (0:
+    /// the coil wrote them) and acting on the state. [`Explained::then`] joins it with the box
+    /// call that follows in the same scan.
     ///
     /// ```
     /// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
@@ -320,13 +357,127 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// let pt = plc_timers::time!("T#100MS");
     /// let mut ton = IecTimerRef::<u32>::new();
     /// ton.call(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, pt));
-    /// assert_eq!(ton.reset_timer_explained(), RuleSet::of(Rule::IEC_RT_01));
+    /// let e = ton.reset_timer_explained();
+    /// assert_eq!((e.state, e.outputs[1], e.written), (RuleSet::of(Rule::IEC_RT_01), RuleSet::of(Rule::IEC_RT_01), 0b11));
     /// let state = ton.state();
     /// assert!(!state.running && !state.input && state.et == 0 && state.pt == 100);
     /// ```
-    pub fn reset_timer_explained(&mut self) -> RuleSet {
+    pub fn reset_timer_explained(&mut self) -> Explained<IecOutput<C>> {
+        let mut rec = Explanation::default();
+        rec.write(RuleSet::of(Rule::IEC_RT_01), Q | ET);
         self.reset_timer();
-        RuleSet::of(Rule::IEC_RT_01)
+        rec.finish(self.held())
+    }
+
+    /// The `-(RT)-` coil followed by the box call in the same scan, explained as one
+    /// ([`Explained::then`]). IEC-RT-01 cleared the stored IN, so an IN still 1 is a rising
+    /// edge: a start in the call is the coil's too, and IEC-RT-01 decides the outputs it wrote.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let on = IecInput::new(true, plc_timers::time!("T#100MS"));
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call_explained(IecKind::Ton, CpuTime::ZERO, on);
+    /// let e = ton.reset_timer_then_call_explained(IecKind::Ton, CpuTime::from_millis(50), on);
+    /// assert_eq!(e.output.et, 0); // started again
+    /// assert!(e.outputs[1].contains(Rule::IEC_RT_01) && e.outputs[1].contains(Rule::IEC_START_01));
+    /// ```
+    pub fn reset_timer_then_call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+    ) -> Explained<IecOutput<C>> {
+        let held = self.state.input;
+        let coil = self.reset_timer_explained();
+        let mut e = coil.then(self.call_explained(kind, now, input));
+        for (i, o) in e.outputs.iter_mut().enumerate().take(2) {
+            if held && e.written & (1 << i) != 0 && o.contains(Rule::IEC_EDGE_01) {
+                o.insert(Rule::IEC_RT_01);
+            }
+        }
+        e
+    }
+
+    /// [`IecTimerOps::preset_timer`] (the `-(PT)-` coil), explained: [`Rule::IEC_PT_COIL_01`]
+    /// acts on the state when the preset member changes, and decides ET when the coil clamps it.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, plc_timers::time!("T#100MS")));
+    /// ton.call(IecKind::Ton, CpuTime::from_millis(60), IecInput::new(true, plc_timers::time!("T#100MS")));
+    /// let e = ton.preset_timer_explained(plc_timers::time!("T#50MS"));
+    /// assert_eq!(e.output.et, 50); // clamped to the new preset
+    /// assert!(e.state.contains(Rule::IEC_PT_COIL_01) && e.outputs[1].contains(Rule::IEC_PT_COIL_01));
+    /// ```
+    pub fn preset_timer_explained(&mut self, pt: Time) -> Explained<IecOutput<C>> {
+        let mut rec = Explanation::default();
+        let before = self.state;
+        self.preset_timer(pt);
+        let coil = RuleSet::of(Rule::IEC_PT_COIL_01);
+        if self.state.et != before.et {
+            rec.write(coil, ET);
+        } else if self.state.pt != before.pt {
+            rec.state(coil);
+        }
+        rec.finish(self.held())
+    }
+
+    /// [`IecTimerOps::read_q`] and [`IecTimerOps::read_et`] (a read of the structure's Q or
+    /// ELAPSED member), explained: [`Rule::IEC_ACCESS_01`] decides both (the read updates the
+    /// timer first), with the rules of that update.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let pt = plc_timers::time!("T#100MS");
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, pt));
+    /// let e = ton.read_explained(CpuTime::from_millis(100));
+    /// assert!(e.output.q); // expired in the read's update
+    /// assert!(e.outputs[0].contains(Rule::IEC_ACCESS_01) && e.outputs[0].contains(Rule::IEC_EXPIRY_01));
+    /// ```
+    pub fn read_explained(&mut self, now: CpuTime) -> Explained<IecOutput<C>> {
+        let mut rec = Explanation::default();
+        if let Some(kind) = self.state.kind {
+            self.update(now, kind, None, &mut rec);
+        }
+        rec.add(RuleSet::of(Rule::IEC_ACCESS_01), Q | ET);
+        rec.finish(self.held())
+    }
+
+    /// [`IecTimerOps::run_stop_run`], explained: [`Rule::IEC_RETAIN_01`] decides Q and ET
+    /// (returned to their initial values, or kept by a retentive structure).
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimerOps, IecTimerRef};
+    /// use plc_timers::rule::Rule;
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// let mut ton = IecTimerRef::<u32>::new();
+    /// ton.call(IecKind::Ton, CpuTime::ZERO, IecInput::new(true, plc_timers::time!("T#0MS")));
+    /// let e = ton.run_stop_run_explained(false);
+    /// assert!(!e.output.q && e.outputs[0].contains(Rule::IEC_RETAIN_01) && e.wrote(0));
+    /// ```
+    pub fn run_stop_run_explained(&mut self, retentive: bool) -> Explained<IecOutput<C>> {
+        let mut rec = Explanation::default();
+        let retain = RuleSet::of(Rule::IEC_RETAIN_01);
+        if retentive {
+            rec.add(retain, Q | ET);
+        } else {
+            rec.write(retain, Q | ET);
+        }
+        self.run_stop_run(retentive);
+        rec.finish(self.held())
     }
 }
 

@@ -314,13 +314,9 @@ impl<const N: usize> TimerMemory<N> {
         input: S5Input,
     ) -> Result<Explained<S5Output>, NoSuchOperand> {
         let from = self.now;
+        // The area's clock does not go back: no tick before `from`, as in `call`.
         let e = self.explained(index, |t, rec| {
-            if now > from {
-                t.call_rec(kind, now, input, rec);
-            } else {
-                // The area's clock does not go back: no tick, as in `call`.
-                t.execute_rec(kind, input, rec);
-            }
+            t.call_rec(kind, now.max(from), input, rec);
         })?;
         self.advance_to_except(now, index);
         Ok(e)

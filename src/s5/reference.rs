@@ -111,7 +111,7 @@ impl S5TimerRef {
 
     fn tick_rec(&mut self, ticks: u64, rec: &mut impl Recorder) {
         let s = &mut self.state;
-        if !s.running || ticks == 0 || s.value == 0 {
+        if !s.running || s.value == 0 {
             return;
         }
         let tick = RuleSet::of(Rule::S5TMR_TICK_01);
@@ -120,9 +120,15 @@ impl S5TimerRef {
             Self::expire(s);
             rec.write(tick.with(Rule::S5TMR_EXPIRE_01), Q | VALUE);
         } else {
-            // ticks < value <= 999, so the cast is exact.
-            s.value -= ticks as u16;
-            rec.write(tick, VALUE);
+            if ticks > 0 {
+                // ticks < value <= 999, so the cast is exact.
+                s.value -= ticks as u16;
+                rec.write(tick, VALUE);
+            }
+            // The ticks in (t_prev, t], none or too few to run out, decide the value and the
+            // status of the running timer also when no tick fell: a deadline model that ends
+            // the time between two ticks breaks this rule here.
+            rec.add(tick, Q | VALUE);
         }
     }
 
@@ -306,6 +312,8 @@ impl S5TimerRef {
         self.enable(input.fr, rec);
         self.start_logic(kind, &input, fr_edge, rec);
         self.reset(input.r, rec);
+        // BI and BCD are the timer's value as `L T n` and `LC T n` read it.
+        rec.add(RuleSet::of(Rule::S5TMR_LOAD_01), VALUE);
         self.state.output()
     }
 

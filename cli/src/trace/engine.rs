@@ -296,9 +296,9 @@ struct Row<F: Adapter> {
     signals: Signals,
     preset: F::Preset,
     output: F::Output,
-    /// With [`Engine::explain`]: the rules that decided each output (catalog order), and the
-    /// rules that acted on the state.
-    rules: Option<([RuleSet; RULE_OUTPUTS], RuleSet)>,
+    /// With [`Engine::explain`]: the rules that decided each output (catalog order), the
+    /// rules that acted on the state, and the outputs the call wrote (bit per output).
+    rules: Option<([RuleSet; RULE_OUTPUTS], RuleSet, u8)>,
 }
 
 /// A family with its resolved header, driven row by row.
@@ -421,7 +421,7 @@ impl<F: Adapter> Engine<F> {
         };
         let (output, rules) = if self.explain {
             let e = self.family.call_explained(t, signals, preset);
-            (e.output, Some((e.outputs, e.state)))
+            (e.output, Some((e.outputs, e.state, e.written)))
         } else {
             (self.family.call(t, signals, preset), None)
         };
@@ -570,7 +570,7 @@ fn run_family<F: Adapter, R: Read, W: Write>(
             out.push(b',');
             write_value(&mut out, v);
         }
-        if let Some((outputs, _)) = row.rules {
+        if let Some((outputs, _, _)) = row.rules {
             out.push(b',');
             let all = outputs[..n_outputs]
                 .iter()
@@ -612,12 +612,16 @@ pub struct ContextRow {
 /// ([`plc_timers::rule::Explained`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Why {
-    /// The rules that decided the output at the row (empty when no rule acted on it there: it
-    /// kept the value of an earlier row).
+    /// The rules that determined the output at the row, whether its value changed or stayed
+    /// (empty when no rule's premise bears on it there: it kept the value of an earlier row).
     pub rules: RuleSet,
-    /// The latest earlier row where rules acted on the state that the row's own rules do not
-    /// cover (the set whose cleared memory made the count, the start of the running time, the
-    /// row where PT was latched): its line and those rules.
+    /// The earlier row: the latest row before this one whose call wrote the output (a rule's
+    /// action there set the state it is read from: a start, a set, a tick, R), with the rules
+    /// that determined the output there, and, when this row's call wrote the output too (its
+    /// action started from the state that row left), the rules that acted on the state there.
+    /// No row between them wrote it, so the output's value before this row is the one those
+    /// rules gave (kept since by the rules named at the rows between); `None` when no earlier
+    /// row wrote it (its initial value).
     pub earlier: Option<(u64, RuleSet)>,
     /// Whether the implementation explains its calls (the optimized forms do not: check
     /// against the reference, without `--optimized`, to see the rules).
@@ -807,11 +811,9 @@ fn check_family<F: Adapter, R: Read>(
     let mut engine = Engine::new(family, &header, Mode::WithOutputs, preset)?;
     engine.explain = true;
     let explained = engine.family.explains();
-    // Per set of rules that acted on the state, the last line where it did, not continuing
-    // the row before (few distinct sets occur, so this stays small on any trace).
-    let mut acted: Vec<(RuleSet, u64)> = Vec::new();
-    // The rules that acted on the state at the row before.
-    let mut previous = RuleSet::EMPTY;
+    // Per output (catalog order), the latest row whose call wrote it: its line, the rules that
+    // determined the output there and those that acted on the state there.
+    let mut wrote: [Option<(u64, RuleSet, RuleSet)>; RULE_OUTPUTS] = [None; RULE_OUTPUTS];
     // The compared columns: (column, output index), in the order of the catalog.
     let mut compared = Vec::with_capacity(chosen.len());
     for &o in &chosen {
@@ -872,21 +874,23 @@ fn check_family<F: Adapter, R: Read>(
             .iter()
             .enumerate()
             .find(|&(k, &(_, o))| found[k] != values.as_slice()[o]);
-        let (outputs, state) = row.rules.unwrap_or_default();
+        let (outputs, state, written) = row.rules.unwrap_or_default();
         if let Some((_, &(column, o))) = differing {
-            let rules = outputs[o];
-            // What this row's own rules cover: those of every output and of the state (ticks
-            // and ET updates that continue every row are covered by the row's own).
-            let covered = outputs.iter().fold(state, |all, r| all.union(*r));
-            // The latest earlier row with a rule on the state this row does not cover: where
-            // the episode this row continues began (a start, a set, a row under R).
-            let earlier = acted
-                .iter()
-                .filter(|(set, _)| !set.is_subset(covered))
-                .max_by_key(|(_, line)| *line)
-                .map(|&(set, line)| (line, set));
+            // When this row's action wrote the output, it started from the state the earlier
+            // row left: the rules that acted on that state there matter too (a set whose
+            // cleared memory lets a held input count here, though R decided CV there).
+            let earlier = wrote.get(o).copied().flatten().map(|(line, rules, acted)| {
+                (
+                    line,
+                    if written & (1 << o) != 0 {
+                        rules.union(acted)
+                    } else {
+                        rules
+                    },
+                )
+            });
             let why = Why {
-                rules,
+                rules: outputs[o],
                 earlier,
                 explained,
             };
@@ -932,16 +936,11 @@ fn check_family<F: Adapter, R: Read>(
             });
             break;
         }
-        // A row whose rules on the state all acted at the row before too only continues it
-        // (the ticks of a running time, ET following the clock): it is not recorded, so that
-        // the row where the episode began is the one named.
-        if !state.is_empty() && !state.is_subset(previous) {
-            match acted.iter_mut().find(|(set, _)| *set == state) {
-                Some(entry) => entry.1 = rec.line(),
-                None => acted.push((state, rec.line())),
+        for (o, last) in wrote.iter_mut().enumerate() {
+            if written & (1 << o) != 0 {
+                *last = Some((rec.line(), outputs[o], state));
             }
         }
-        previous = state;
     }
     Ok(report)
 }

@@ -142,6 +142,7 @@ fn unexplained<O>(output: O) -> Explained<O> {
         output,
         outputs: [RuleSet::EMPTY; RULE_OUTPUTS],
         state: RuleSet::EMPTY,
+        written: 0,
     }
 }
 
@@ -178,23 +179,39 @@ explains! {
         |t, kind, _now, input| unexplained(t.call(kind, input));
 }
 
-/// The `-(RT)-` coil of an IEC timer, explained as [`Explains`] explains a call: the reference
-/// gives the rules that acted ([`IecTimerRef::reset_timer_explained`]), the optimized form none.
+/// The `-(RT)-` coil of an IEC timer before the box call of the same row, explained as
+/// [`Explains`] explains a call: the reference gives its explanation
+/// ([`IecTimerRef::reset_timer_then_call_explained`]), the optimized form none.
 pub trait ExplainsRt {
-    /// The coil with power flow; the rules that acted on the state.
-    fn reset_explained(&mut self) -> RuleSet;
+    /// The coil with power flow, then the box call, explained.
+    fn reset_then_call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+    ) -> Explained<IecOutput<u32>>;
 }
 
 impl ExplainsRt for IecTimerRef<u32> {
-    fn reset_explained(&mut self) -> RuleSet {
-        self.reset_timer_explained()
+    fn reset_then_call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+    ) -> Explained<IecOutput<u32>> {
+        self.reset_timer_then_call_explained(kind, now, input)
     }
 }
 
 impl ExplainsRt for IecTimer {
-    fn reset_explained(&mut self) -> RuleSet {
+    fn reset_then_call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime,
+        input: IecInput,
+    ) -> Explained<IecOutput<u32>> {
         self.reset_timer();
-        RuleSet::EMPTY
+        unexplained(self.call(kind, now, input))
     }
 }
 
@@ -682,32 +699,21 @@ impl<T: IecTimerOps<u32> + Explains<IecKind, IecInput, IecOutput<u32>> + Explain
         self.timer.call(self.kind, CpuTime::from_millis(now), input)
     }
 
-    /// [`Adapter::call`] explained: a row with `RT` = 1 gives IEC-RT-01 besides the call's
-    /// rules, for the state and for both outputs: the coil cleared Q and ET in this row, and
-    /// what the call then did to them started from what the coil left.
+    /// [`Adapter::call`] explained: a row with `RT` = 1 is the coil and the call explained
+    /// as one ([`IecTimerRef::reset_timer_then_call_explained`]).
     fn call_explained(
         &mut self,
         now: u64,
         signals: Signals,
         pt: Time,
     ) -> Explained<IecOutput<u32>> {
-        let coil = if signals.get(Port::Rt) {
-            self.timer.reset_explained()
-        } else {
-            RuleSet::EMPTY
-        };
         let input = self.input(signals, pt);
-        let mut e = self
-            .timer
-            .explained(self.kind, CpuTime::from_millis(now), input);
-        if !coil.is_empty() {
-            let n = self.block.outputs().len();
-            for o in &mut e.outputs[..n] {
-                *o = o.union(coil);
-            }
-            e.state = e.state.union(coil);
+        let now = CpuTime::from_millis(now);
+        if signals.get(Port::Rt) {
+            self.timer.reset_then_call_explained(self.kind, now, input)
+        } else {
+            self.timer.explained(self.kind, now, input)
         }
-        e
     }
 
     fn explains(&self) -> bool {
