@@ -35,6 +35,8 @@ pub enum Rule {
     TIME_ARITH_01,
     /// S5TMR-TICK-01 (`spec/requirements/s5.toml`): The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t\_prev, t\] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.
     S5TMR_TICK_01,
+    /// S5TMR-CLOCK-01 (`spec/requirements/s5.toml`): The CPU time \`now\` given to the timers must not go back. If it does, an S5 timer applies no tick for the step back and keeps the latest time it saw, so that the span it went back is not counted again when the clock comes forward: the reference, the lone optimized timer and the timer memory area alike (the area's clock never goes back). An IEC timer computes ET as now - START modulo 2^32 (IEC-WRAP-01), so a clock behind START reads as almost 2^32 ms elapsed and a running timer expires at once. Counters have no clock.
+    S5TMR_CLOCK_01,
     /// S5TMR-EXPIRE-01 (`spec/requirements/s5.toml`): When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S\_PULSE, S\_PEXT and S\_OFFDT, 1 for S\_ODT and S\_ODTS.
     S5TMR_EXPIRE_01,
     /// S5TMR-ZERO-01 (`spec/requirements/s5.toml`): A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.
@@ -177,10 +179,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 79;
+    pub const COUNT: usize = 80;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 79] = [
+    pub const ALL: [Rule; 80] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -191,6 +193,7 @@ impl Rule {
         Rule::S5T_LIT_02,
         Rule::TIME_ARITH_01,
         Rule::S5TMR_TICK_01,
+        Rule::S5TMR_CLOCK_01,
         Rule::S5TMR_EXPIRE_01,
         Rule::S5TMR_ZERO_01,
         Rule::S5TMR_EDGE_01,
@@ -275,6 +278,7 @@ impl Rule {
             Rule::S5T_LIT_02 => "S5T-LIT-02",
             Rule::TIME_ARITH_01 => "TIME-ARITH-01",
             Rule::S5TMR_TICK_01 => "S5TMR-TICK-01",
+            Rule::S5TMR_CLOCK_01 => "S5TMR-CLOCK-01",
             Rule::S5TMR_EXPIRE_01 => "S5TMR-EXPIRE-01",
             Rule::S5TMR_ZERO_01 => "S5TMR-ZERO-01",
             Rule::S5TMR_EDGE_01 => "S5TMR-EDGE-01",
@@ -360,6 +364,7 @@ impl Rule {
             Rule::S5T_LIT_02 => "The literal parsers are total: any text gives a value or a typed error whose byte offset lies inside the text and points at the faulty token (the start of the value for a total out of range), never a panic; an accepted S5TIME holds the invariant units <= 999 and at most 9 990 000 ms.",
             Rule::TIME_ARITH_01 => "TIME arithmetic never wraps: checked add, sub and negation give None exactly when the exact result leaves T#-24d_20h_31m_23s_648ms .. T#24d_20h_31m_23s_647ms; saturating add and sub clamp to the ends.",
             Rule::S5TMR_TICK_01 => "The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t_prev, t] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.",
+            Rule::S5TMR_CLOCK_01 => "The CPU time `now` given to the timers must not go back. If it does, an S5 timer applies no tick for the step back and keeps the latest time it saw, so that the span it went back is not counted again when the clock comes forward: the reference, the lone optimized timer and the timer memory area alike (the area's clock never goes back). An IEC timer computes ET as now - START modulo 2^32 (IEC-WRAP-01), so a clock behind START reads as almost 2^32 ms elapsed and a running timer expires at once. Counters have no clock.",
             Rule::S5TMR_EXPIRE_01 => "When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S_PULSE, S_PEXT and S_OFFDT, 1 for S_ODT and S_ODTS.",
             Rule::S5TMR_ZERO_01 => "A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.",
             Rule::S5TMR_EDGE_01 => "Every start needs a change of the signal at S (0 to 1; 1 to 0 for S_OFFDT): a level held at S never starts or reloads a timer, except through an FR edge.",
