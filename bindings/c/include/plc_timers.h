@@ -1419,8 +1419,8 @@ typedef struct plc_timers_counter_memory {
  */
 typedef struct plc_timers_s5_timer_ref {
   /**
-   * The CPU time of the previous call, in ms: the OS ticks after it and up to the next call
-   * are applied before that call.
+   * The latest CPU time a call saw, in ms (the previous call's unless the clock went back):
+   * the OS ticks after it and up to the next call are applied before that call.
    */
   uint64_t last_call_ms;
   /**
@@ -1461,7 +1461,7 @@ typedef struct plc_timers_s5_timer_ref {
  */
 typedef struct plc_timers_s5_timer {
   /**
-   * The CPU time of the previous call, in ms.
+   * The latest CPU time a call saw, in ms (the previous call's unless the clock went back).
    */
   uint64_t last_call_ms;
   /**
@@ -2485,7 +2485,8 @@ plc_timers_status plc_timers_s5_timer_init(struct plc_timers_s5_timer *timer);
  * One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
  * the reference semantics: the OS ticks of the timer's base since its previous call are applied
  * (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic of the
- * kind and `R`. `now_ms` is not before the previous call's (an earlier time applies no ticks).
+ * kind and `R`. `now_ms` must not go back: an earlier time applies no tick and `last_call_ms`
+ * keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's clock does.
  * The outputs are written to `out`.
  *
  * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`

@@ -177,8 +177,8 @@ pub struct plc_timers_iec_output {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_timer_ref {
-    /// The CPU time of the previous call, in ms: the OS ticks after it and up to the next call
-    /// are applied before that call.
+    /// The latest CPU time a call saw, in ms (the previous call's unless the clock went back):
+    /// the OS ticks after it and up to the next call are applied before that call.
     pub last_call_ms: u64,
     /// The remaining value in units of `base`, 0 to 999.
     pub value: u16,
@@ -235,7 +235,7 @@ impl Mirror for plc_timers_s5_timer_ref {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_timer {
-    /// The CPU time of the previous call, in ms.
+    /// The latest CPU time a call saw, in ms (the previous call's unless the clock went back).
     pub last_call_ms: u64,
     /// The timer word: bits 9-0 the remaining value (binary, 0 to 999), bits 13-12 the time
     /// base, bit 16 running, bit 17 Q, bit 18 the status on expiry, bit 19 the S edge memory,
@@ -298,7 +298,8 @@ pub unsafe extern "C" fn plc_timers_s5_timer_init(
 /// One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
 /// the reference semantics: the OS ticks of the timer's base since its previous call are applied
 /// (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic of the
-/// kind and `R`. `now_ms` is not before the previous call's (an earlier time applies no ticks).
+/// kind and `R`. `now_ms` must not go back: an earlier time applies no tick and `last_call_ms`
+/// keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's clock does.
 /// The outputs are written to `out`.
 ///
 /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
