@@ -16,7 +16,7 @@ import pytest
 def s5_steps(call: Callable[[int], plc_timers.S5Output]) -> None:
     """0 and 600 ms, 100 ms refused, then 600, 990 and 1000 ms: the span is counted once."""
     assert (call(0).q, call(600).bi) == (False, 40)
-    with pytest.raises(ValueError, match="now_ms goes backwards: 100 after 600"):
+    with pytest.raises(ValueError, match="backwards"):
         call(100)
     out = call(600)
     assert (out.q, out.bi) == (False, 40), "S5TMR-CLOCK-01: the refused call changed nothing"
@@ -32,7 +32,7 @@ def test_s5_timer_refuses_a_clock_going_back(optimized: bool) -> None:
 def test_timer_memory_refuses_a_clock_going_back() -> None:
     area = plc_timers.TimerMemory(64)
     s5_steps(lambda now_ms: area.call(2, "S_ODT", now_ms, s=True, tv="S5T#1S"))
-    with pytest.raises(ValueError, match="goes backwards"):
+    with pytest.raises(ValueError, match="backwards"):
         area.advance_to(999)
     assert area.now_ms == 1000
 
@@ -43,7 +43,7 @@ def test_iec_timer_refuses_a_clock_going_back(optimized: bool) -> None:
     assert not ton.call(1000, in_=True).q
     # In the library 999 would read as 2^32 - 1 ms after START (the 32-bit clock's wrap) and
     # expire the timer at once; Python refuses it instead.
-    with pytest.raises(ValueError, match="now_ms goes backwards: 999 after 1000"):
+    with pytest.raises(ValueError, match="backwards"):
         ton.call(999, in_=True)
     out = ton.call(1499, in_=True)
     assert (out.q, out.et) == (False, 499), "S5TMR-CLOCK-01: the refused call changed nothing"
