@@ -514,6 +514,85 @@ pub fn prop_sequence_equivalence_from(kind: S5Kind, initial: S5State, steps: &[(
     }
 }
 
+/// S5TMR-CLOCK-01: called at the CPU times of `steps` (absolute, in any order, the first
+/// execution after time 0) from the valid state `initial`, every S5 form behaves as the
+/// reference called at the latest time seen so far: a step back applies no tick, and the span
+/// it went back is not counted again when the clock comes forward. The oracle is that monotone
+/// clock (whose behaviour S5-EQUIV-02 and the rule properties check); the forms checked are the
+/// reference, a lone [`S5Timer`] and a one-timer [`TimerMemory`] box.
+pub fn prop_backward_clock(kind: S5Kind, initial: S5State, steps: &[(u64, S5Input)]) -> bool {
+    let Some(w) = TimerWord::from_state(initial) else {
+        return false;
+    };
+    let valid = "a valid state";
+    let mut oracle = S5TimerRef::from_state(initial, CpuTime::ZERO).expect(valid);
+    let mut r = oracle;
+    let mut lone = S5Timer::from_state(initial, CpuTime::ZERO).expect(valid);
+    let mut area = TimerMemory::<1>::from_words([w], CpuTime::ZERO);
+    let mut latest = CpuTime::ZERO;
+    for &(t, input) in steps {
+        let t = CpuTime::from_millis(t);
+        cover!(
+            t < latest && oracle.state().running,
+            "S5TMR-CLOCK-01: the clock goes back under a running timer"
+        );
+        latest = latest.max(t);
+        let expected = oracle.call(kind, latest, input);
+        check_eq!(
+            r.call(kind, t, input),
+            expected,
+            "S5TMR-CLOCK-01 reference at {t:?}"
+        );
+        check_eq!(r.state(), oracle.state(), "S5TMR-CLOCK-01 reference state");
+        check_eq!(r.last_call(), latest, "S5TMR-CLOCK-01 reference clock");
+        check_eq!(
+            lone.call(kind, t, input),
+            expected,
+            "S5TMR-CLOCK-01 S5Timer at {t:?}"
+        );
+        check_eq!(lone.state(), oracle.state(), "S5TMR-CLOCK-01 S5Timer state");
+        check_eq!(lone.last_call(), latest, "S5TMR-CLOCK-01 S5Timer clock");
+        let b = area.call(0, kind, t, input).expect("timer 0 exists");
+        check_eq!(b, expected, "S5TMR-CLOCK-01 area at {t:?}");
+        check_eq!(area.get(0), Ok(oracle.state()), "S5TMR-CLOCK-01 area state");
+        check_eq!(area.now(), latest, "S5TMR-CLOCK-01 area clock");
+    }
+    true
+}
+
+/// S5TMR-CLOCK-01 driver: every sequence of four executions over 20 symbols (S, R, FR patterns
+/// x the absolute times 0, 9, 10, 30 and 45 ms, so that the clock goes back, stands and comes
+/// forward across ticks) from the initial state, for every kind. TV = 30 ms (3 ticks).
+#[test]
+fn exhaustive_backward_clock() {
+    const PATTERNS: [(bool, bool, bool); 4] = [
+        (false, false, false),
+        (true, false, false),
+        (false, true, false),
+        (true, false, true),
+    ];
+    const TIMES: [u64; 5] = [0, 9, 10, 30, 45];
+    let tv = S5Time::from_word(0x0003).expect("valid word");
+    let symbols = PATTERNS.len() * TIMES.len();
+    let sequences = symbols.pow(4);
+    crate::cover::check_ids(&["S5TMR-CLOCK-01"], || {
+        let mut checked = 0usize;
+        for kind in S5Kind::ALL {
+            for mut code in 0..sequences {
+                let mut steps = [(0u64, S5Input::new(false, false, tv)); 4];
+                for step in steps.iter_mut() {
+                    let sym = code % symbols;
+                    code /= symbols;
+                    let (s, r, fr) = PATTERNS[sym % PATTERNS.len()];
+                    *step = (TIMES[sym / PATTERNS.len()], S5Input { s, r, fr, tv });
+                }
+                checked += usize::from(prop_backward_clock(kind, S5State::RESET, &steps));
+            }
+        }
+        check_eq!(checked, 5 * sequences, "every case checked");
+    });
+}
+
 /// S5-AREA-01: `n` ticks of `tick_base` on an area of `N` timers in the states `states` equal
 /// the reference tick of each timer whose base is `tick_base`, and leave the others unchanged.
 pub fn prop_area_tick<const N: usize>(states: [S5State; N], tick_base: TimeBase, n: u64) -> bool {

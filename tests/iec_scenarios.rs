@@ -583,3 +583,18 @@ fn ton_banks_compare_by_their_timers() {
         "timers differ"
     );
 }
+
+/// S5TMR-CLOCK-01 / IEC-WRAP-01: the IEC timers compute ET as now - START modulo 2^32, so a
+/// clock 1 ms behind the start reads as 2^32 - 1 ms elapsed: a running TON expires at once.
+/// (That is why `now` must not go back.)
+#[test]
+fn ton_clock_behind_start_reads_as_a_wrap() {
+    let mut t = Both::new(IecKind::Ton);
+    t.call(1000, true, 500);
+    assert_eq!(t.call(1100, true, 500), out(false, 100));
+    assert_eq!(
+        t.call(999, true, 500),
+        out(true, 500),
+        "S5TMR-CLOCK-01: 1 ms behind START is 2^32 - 1 ms later"
+    );
+}

@@ -548,3 +548,32 @@ fn input_builders_set_one_input() {
         assert_eq!((back.r, back.fr), (!r, !fr), "builders overwrite");
     }
 }
+
+/// S5TMR-CLOCK-01 (issue 37): an S_ODT of S5T#1S (100 ticks of 10 ms, LAD manual §9.5) started
+/// at 0 ms and executed at 600, 100 (the clock goes back) and 600 ms again runs out at the
+/// 100th tick after its start, at 1000 ms, in every form: the 500 ms it went back are neither
+/// counted on the way back nor a second time on the way forward.
+#[test]
+fn clock_going_back_counts_no_span_twice() {
+    let mut sd = Both::new(S5Kind::SOdt, "S5T#1S");
+    assert!(!sd.at(0, true, false).q);
+    assert_eq!(
+        sd.at(600, true, false).bi,
+        40,
+        "S5TMR-CLOCK-01: 60 ticks taken"
+    );
+    assert_eq!(
+        sd.at(100, true, false).bi,
+        40,
+        "S5TMR-CLOCK-01: no tick back"
+    );
+    let again = sd.at(600, true, false);
+    assert!(!again.q, "S5TMR-CLOCK-01: 400 ms before the end");
+    assert_eq!(
+        again.bi, 40,
+        "S5TMR-CLOCK-01: the span is not counted twice"
+    );
+    assert!(!sd.at(990, true, false).q, "S5TMR-CLOCK-01: one tick left");
+    assert!(sd.at(1000, true, false).q, "S5TMR-CLOCK-01: the 100th tick");
+    assert_eq!(sd.reference.last_call(), CpuTime::from_millis(1000));
+}

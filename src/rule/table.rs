@@ -41,6 +41,8 @@ pub enum Rule {
     S5T_RES_01,
     /// S5TMR-TICK-01 (`spec/requirements/s5.toml`): The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t\_prev, t\] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.
     S5TMR_TICK_01,
+    /// S5TMR-CLOCK-01 (`spec/requirements/s5.toml`): The CPU time \`now\` given to the timers must not go back. If it does, an S5 timer applies no tick for the step back and keeps the latest time it saw, so that the span it went back is not counted again when the clock comes forward: the reference, the lone optimized timer and the timer memory area alike (the area's clock never goes back). An IEC timer computes ET as now - START modulo 2^32 (IEC-WRAP-01), so a clock behind START reads as almost 2^32 ms elapsed and a running timer expires at once. Counters have no clock. The Python package refuses a call at an earlier time than the instance's last (ValueError) and changes nothing.
+    S5TMR_CLOCK_01,
     /// S5TMR-EXPIRE-01 (`spec/requirements/s5.toml`): When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S\_PULSE, S\_PEXT and S\_OFFDT, 1 for S\_ODT and S\_ODTS.
     S5TMR_EXPIRE_01,
     /// S5TMR-ZERO-01 (`spec/requirements/s5.toml`): A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.
@@ -193,10 +195,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 87;
+    pub const COUNT: usize = 88;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 87] = [
+    pub const ALL: [Rule; 88] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -210,6 +212,7 @@ impl Rule {
         Rule::LTIME_LIT_01,
         Rule::S5T_RES_01,
         Rule::S5TMR_TICK_01,
+        Rule::S5TMR_CLOCK_01,
         Rule::S5TMR_EXPIRE_01,
         Rule::S5TMR_ZERO_01,
         Rule::S5TMR_EDGE_01,
@@ -302,6 +305,7 @@ impl Rule {
             Rule::LTIME_LIT_01 => "LTIME-LIT-01",
             Rule::S5T_RES_01 => "S5T-RES-01",
             Rule::S5TMR_TICK_01 => "S5TMR-TICK-01",
+            Rule::S5TMR_CLOCK_01 => "S5TMR-CLOCK-01",
             Rule::S5TMR_EXPIRE_01 => "S5TMR-EXPIRE-01",
             Rule::S5TMR_ZERO_01 => "S5TMR-ZERO-01",
             Rule::S5TMR_EDGE_01 => "S5TMR-EDGE-01",
@@ -395,6 +399,7 @@ impl Rule {
             Rule::LTIME_LIT_01 => "LTIME literals: LT#… or LTIME#… with units D, H, M, S, MS, US, NS (case-insensitive, optional underscores, optional minus after #, largest unit first, each once, later ones within their unit's range), or a plain number of nanoseconds; Display gives LT#1MS_500US (LT#0NS for zero); parsing it gives the same value.",
             Rule::S5T_RES_01 => "A duration is cut down to whole units of its automatic base without error: the part below the base is lost (S5T#10S_5MS is 100 units of 100 ms), and any duration below 10 ms, such as S5T#5MS, is S5T#0MS: a timer started with it has the value 0 (S5TMR-ZERO-01), active in its starting execution and run out at its next.",
             Rule::S5TMR_TICK_01 => "The operating system decrements a running timer's value by one unit per tick of its base, until 0. Ticks fall on every whole multiple of the base on the CPU millisecond clock; before a timer executes at t, every tick in (t_prev, t] is applied. A timer started with value v runs out on the v-th tick after its start: its duration lies between v-1 and v bases.",
+            Rule::S5TMR_CLOCK_01 => "The CPU time `now` given to the timers must not go back. If it does, an S5 timer applies no tick for the step back and keeps the latest time it saw, so that the span it went back is not counted again when the clock comes forward: the reference, the lone optimized timer and the timer memory area alike (the area's clock never goes back). An IEC timer computes ET as now - START modulo 2^32 (IEC-WRAP-01), so a clock behind START reads as almost 2^32 ms elapsed and a running timer expires at once. Counters have no clock. The Python package refuses a call at an earlier time than the instance's last (ValueError) and changes nothing.",
             Rule::S5TMR_EXPIRE_01 => "When the value reaches 0 the time has run out: the timer stops and its status switches to the one its start chose: 0 for S_PULSE, S_PEXT and S_OFFDT, 1 for S_ODT and S_ODTS.",
             Rule::S5TMR_ZERO_01 => "A timer started with the value 0 stays active in the starting execution and is found run out at its next execution, even when no tick has passed.",
             Rule::S5TMR_EDGE_01 => "Every start needs a change of the signal at S (0 to 1; 1 to 0 for S_OFFDT): a level held at S never starts or reloads a timer, except through an FR edge.",

@@ -292,7 +292,9 @@ impl S5State {
 /// assert_eq!(pulse_length(&mut S5Timer::new()), 3);
 /// ```
 pub trait S5TimerOps {
-    /// One execution of the box `kind` at `now`.
+    /// One execution of the box `kind` at `now`. `now` must not go back; a call at an earlier
+    /// time than one before it applies no tick and leaves the timer's clock at the latest time,
+    /// as a timer memory area does (S5TMR-CLOCK-01).
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output;
     /// The state, as the reference names it.
     fn state(&self) -> S5State;

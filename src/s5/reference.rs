@@ -40,8 +40,8 @@ pub const fn kind_rule(kind: S5Kind) -> Rule {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct S5TimerRef {
     state: S5State,
-    /// The CPU time of the previous execution: ticks after it and up to the next execution are
-    /// applied before that execution.
+    /// The latest CPU time an execution saw (a step back leaves it, S5TMR-CLOCK-01): ticks
+    /// after it and up to the next execution are applied before that execution.
     last_call: CpuTime,
 }
 
@@ -96,7 +96,8 @@ impl S5TimerRef {
         }
     }
 
-    /// The CPU time of the previous execution.
+    /// The latest CPU time an execution saw: the previous execution's, unless the clock went
+    /// back (S5TMR-CLOCK-01).
     pub const fn last_call(&self) -> CpuTime {
         self.last_call
     }
@@ -325,7 +326,11 @@ impl S5TimerRef {
         rec: &mut impl Recorder,
     ) -> S5Output {
         self.tick_rec(ticks_between(self.last_call, now, self.state.base), rec);
-        self.last_call = now;
+        // S5TMR-CLOCK-01: a step back applies no tick and the clock keeps the latest time it
+        // saw, as the timer memory area's does; else the span back would be counted again.
+        if now > self.last_call {
+            self.last_call = now;
+        }
         self.execute_rec(kind, input, rec)
     }
 
@@ -375,8 +380,9 @@ impl S5TimerRef {
 }
 
 impl S5TimerOps for S5TimerRef {
-    /// One execution at CPU time `now` (not before the previous one): the ticks of the timer's
-    /// base in `(last_call, now]` are applied first.
+    /// One execution at CPU time `now`: the ticks of the timer's base in `(last_call, now]` are
+    /// applied first. `now` must not go back; if it does, no tick is applied and `last_call`
+    /// stays (S5TMR-CLOCK-01).
     fn call(&mut self, kind: S5Kind, now: CpuTime, input: S5Input) -> S5Output {
         self.call_rec(kind, now, input, &mut ())
     }

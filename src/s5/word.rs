@@ -497,7 +497,8 @@ impl S5Timer {
         self.word
     }
 
-    /// The CPU time of the previous execution.
+    /// The latest CPU time an execution saw: the previous execution's, unless the clock went
+    /// back (S5TMR-CLOCK-01).
     pub const fn last_call(&self) -> CpuTime {
         self.last_call
     }
@@ -515,7 +516,10 @@ impl S5TimerOps for S5Timer {
             let n = ticks_between_fast(self.last_call, now, base);
             self.word = self.word.tick(n);
         }
-        self.last_call = now;
+        // S5TMR-CLOCK-01: the clock does not go back (no tick was counted above either).
+        if now > self.last_call {
+            self.last_call = now;
+        }
         self.word = self.word.execute(kind, input);
         self.word.output()
     }

@@ -12,6 +12,31 @@
  * milliseconds: now_ms is the CPU time since start (the IEC timers see its low 32 bits).
  * Kinds are passed as int32_t values of their enums; a value outside the enum is
  * PLC_TIMERS_INVALID_KIND. Every pointer is checked: NULL is PLC_TIMERS_NULL_POINTER.
+ *
+ * Input bits (the fields of the input structs and the flag parameters rlo, retentive) are
+ * uint8_t, as a process image holds them: 0 is FALSE, any other byte TRUE. Outputs are bool.
+ * S5 counter presets and values come in two representations, named by their types:
+ * plc_timers_s5_count (binary, C#123 is 123) and plc_timers_bcd_word (as the PLC holds C#123:
+ * W#16#0123); the _bcd functions take the BCD word and check each digit.
+ *
+ * The clock: now_ms must not go back. If it does, the S5 timers (each form, and the timer
+ * memory area) apply no tick and keep the latest time they saw; the IEC timers read a time
+ * behind START as almost 2^32 ms later (the 32-bit clock's wrap), so a running one expires.
+ * Counters have no clock. (Rule S5TMR-CLOCK-01 of the specification.)
+ *
+ * Standards: this header needs C99 or C++11 (or later); CI compiles it with -Wall -Wextra
+ * -Werror -pedantic as C99, C11, C17, C++11 and C++17.
+ *
+ * Thread safety: the library has no global or static mutable state and allocates nothing;
+ * every function acts only on the memory passed to it. Calls on different instances may run
+ * in parallel on any threads; calls on the same instance must not overlap (the caller locks,
+ * as for any plain struct).
+ *
+ * Versions and ABI: PLC_TIMERS_VERSION (major * 10000 + minor * 100 + patch) is this header's
+ * version, plc_timers_version() the linked library's. Within one 0.minor series the ABI
+ * (functions, struct sizes and layouts, enum values) does not change, and the shared library's
+ * soname is libplc_timers.so.0.minor; a new minor (or, from 1.0, a new major) may change it.
+ * Check at start: plc_timers_version() / 100 == PLC_TIMERS_VERSION / 100.
  */
 
 #ifndef PLC_TIMERS_H
@@ -20,6 +45,27 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+
+/**
+ * The major version of the library this header belongs to (`PLC_TIMERS_VERSION_MAJOR`).
+ */
+#define PLC_TIMERS_VERSION_MAJOR 0
+
+/**
+ * The minor version of the library this header belongs to.
+ */
+#define PLC_TIMERS_VERSION_MINOR 1
+
+/**
+ * The patch version of the library this header belongs to.
+ */
+#define PLC_TIMERS_VERSION_PATCH 0
+
+/**
+ * The version of the library this header belongs to, as one number: major * 10000 + minor *
+ * 100 + patch (0.1.0 is 100), as `plc_timers_version` returns it for the library linked.
+ */
+#define PLC_TIMERS_VERSION 100
 
 /**
  * The number of timers in a `plc_timers_timer_memory`: `T 0` to `T 255`.
@@ -79,6 +125,11 @@ enum plc_timers_status
    * A time base argument that is not one of `plc_timers_time_base`.
    */
   PLC_TIMERS_INVALID_TIME_BASE = 8,
+  /**
+   * An S5 counter preset BCD word (`plc_timers_bcd_word`) with a digit above 9 or bits 15-12
+   * set.
+   */
+  PLC_TIMERS_INVALID_BCD_PRESET = 9,
   /**
    * Literal: the text is empty.
    */
@@ -380,25 +431,26 @@ typedef struct plc_timers_counter_i8 plc_timers_counter_sint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_i8 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -482,25 +534,26 @@ typedef struct plc_timers_counter_i16 plc_timers_counter_int;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_i16 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -584,25 +637,26 @@ typedef struct plc_timers_counter_i32 plc_timers_counter_dint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_i32 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -686,25 +740,26 @@ typedef struct plc_timers_counter_i64 plc_timers_counter_lint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_i64 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -788,25 +843,26 @@ typedef struct plc_timers_counter_u8 plc_timers_counter_usint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_u8 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -890,25 +946,26 @@ typedef struct plc_timers_counter_u16 plc_timers_counter_uint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_u16 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -992,25 +1049,26 @@ typedef struct plc_timers_counter_u32 plc_timers_counter_udint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_u32 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -1094,25 +1152,26 @@ typedef struct plc_timers_counter_u64 plc_timers_counter_ulint;
 
 /**
  * The inputs of one call of an IEC counter over the integer type `T`. The inputs an
- * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+ * instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+ * 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_counter_input_u64 {
   /**
    * `CU`, count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD`, count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
    * `LD`, load PV into CV (level).
    */
-  bool ld;
+  uint8_t ld;
   /**
    * `PV`, the preset.
    */
@@ -1176,36 +1235,51 @@ typedef struct plc_timers_s5_counter_ref {
 } plc_timers_s5_counter_ref;
 
 /**
- * The inputs of one S5 counter box call. The inputs a box lacks (CD of S_CU, CU of S_CD) are
- * ignored.
+ * An S5 counter value or preset in binary: the count itself, 0 to 999 (`C#5` is 5, `C#123`
+ * is 123). What `L C n` loads and what `plc_timers_counter_preset_parse` writes.
+ */
+typedef uint16_t plc_timers_s5_count;
+
+/**
+ * The inputs of one S5 counter box call, the preset as a count (binary). The inputs a box
+ * lacks (CD of S_CU, CU of S_CD) are ignored. The input bits are bytes: 0 is FALSE, any other
+ * value TRUE. `plc_timers_s5_counter_input_bcd` is the same with the preset as a BCD word.
  */
 typedef struct plc_timers_s5_counter_input {
   /**
    * `CU` (`ZV`), count up on a rising edge.
    */
-  bool cu;
+  uint8_t cu;
   /**
    * `CD` (`ZR`), count down on a rising edge.
    */
-  bool cd;
+  uint8_t cd;
   /**
    * `S`, set CV to PV on a rising edge.
    */
-  bool s;
+  uint8_t s;
   /**
    * `R`, reset CV to 0 (level).
    */
-  bool r;
+  uint8_t r;
   /**
-   * `FR`, the enable (STL `FR C n`; the LAD boxes have none: false).
+   * `FR`, the enable (STL `FR C n`; the LAD boxes have none: 0).
    */
-  bool fr;
+  uint8_t fr;
   /**
-   * `PV`, the preset as a count 0 to 999 (binary; `C#5` is 5), e.g. from
-   * `plc_timers_counter_preset_parse`.
+   * `PV`, the preset as a count 0 to 999 (binary: `C#5` is 5, `C#123` is 123), e.g. from
+   * `plc_timers_counter_preset_parse`; above 999 is `PLC_TIMERS_INVALID_PRESET`.
    */
-  uint16_t pv;
+  plc_timers_s5_count pv;
 } plc_timers_s5_counter_input;
+
+/**
+ * An S5 counter value or preset as the PLC holds a `C#` constant: three BCD digits in bits
+ * 11-0, bits 15-12 zero (`C#5` is `W#16#0005`, `C#123` is `W#16#0123`). What `LC C n` loads and
+ * what `S C n` takes from ACCU 1. The `_bcd` functions take it and check every digit; it is
+ * never taken for a count (0x0123 is 123, not 291).
+ */
+typedef uint16_t plc_timers_bcd_word;
 
 /**
  * The outputs of one S5 counter box call.
@@ -1218,11 +1292,11 @@ typedef struct plc_timers_s5_counter_output {
   /**
    * `CV` (`DUAL`), the count in binary, 0 to 999.
    */
-  uint16_t cv;
+  plc_timers_s5_count cv;
   /**
    * `CV_BCD` (`DEZ`), the count as three BCD digits.
    */
-  uint16_t cv_bcd;
+  plc_timers_bcd_word cv_bcd;
 } plc_timers_s5_counter_output;
 
 /**
@@ -1236,6 +1310,38 @@ typedef struct plc_timers_s5_counter {
    */
   uint16_t word;
 } plc_timers_s5_counter;
+
+/**
+ * The inputs of one S5 counter box call with the preset as the PLC holds it, a BCD word
+ * (`C#123` is `W#16#0123`); otherwise as `plc_timers_s5_counter_input`. A word with a digit
+ * above 9 or bits 15-12 set is `PLC_TIMERS_INVALID_BCD_PRESET`.
+ */
+typedef struct plc_timers_s5_counter_input_bcd {
+  /**
+   * `CU` (`ZV`), count up on a rising edge.
+   */
+  uint8_t cu;
+  /**
+   * `CD` (`ZR`), count down on a rising edge.
+   */
+  uint8_t cd;
+  /**
+   * `S`, set CV to PV on a rising edge.
+   */
+  uint8_t s;
+  /**
+   * `R`, reset CV to 0 (level).
+   */
+  uint8_t r;
+  /**
+   * `FR`, the enable (STL `FR C n`; the LAD boxes have none: 0).
+   */
+  uint8_t fr;
+  /**
+   * `PV`, the preset as a BCD word (`W#16#0000` to `W#16#0999`).
+   */
+  plc_timers_bcd_word pv_bcd;
+} plc_timers_s5_counter_input_bcd;
 
 /**
  * A timer memory area: 256 timer words and the CPU time up to which the operating system's
@@ -1254,21 +1360,22 @@ typedef struct plc_timers_timer_memory {
 } plc_timers_timer_memory;
 
 /**
- * The inputs of one execution of an S5 timer box.
+ * The inputs of one execution of an S5 timer box. The input bits are bytes, as a runtime's
+ * process image holds them: 0 is FALSE, any other value TRUE.
  */
 typedef struct plc_timers_s5_input {
   /**
-   * `S`, the start input.
+   * `S`, the start input (0 FALSE, any other byte TRUE).
    */
-  bool s;
+  uint8_t s;
   /**
-   * `R`, the reset input.
+   * `R`, the reset input (0 FALSE, any other byte TRUE).
    */
-  bool r;
+  uint8_t r;
   /**
-   * `FR`, the enable input (STL `FR T n`; the LAD boxes have none: false).
+   * `FR`, the enable input (STL `FR T n`; the LAD boxes have none: 0).
    */
-  bool fr;
+  uint8_t fr;
   /**
    * `TV`, the time value as an S5TIME word (`W#16#wxyz`: BCD value in bits 11-0, time base in
    * bits 13-12, bits 15-14 ignored), e.g. from `plc_timers_s5time_parse`.
@@ -1312,8 +1419,8 @@ typedef struct plc_timers_counter_memory {
  */
 typedef struct plc_timers_s5_timer_ref {
   /**
-   * The CPU time of the previous call, in ms: the OS ticks after it and up to the next call
-   * are applied before that call.
+   * The latest CPU time a call saw, in ms (the previous call's unless the clock went back):
+   * the OS ticks after it and up to the next call are applied before that call.
    */
   uint64_t last_call_ms;
   /**
@@ -1354,7 +1461,7 @@ typedef struct plc_timers_s5_timer_ref {
  */
 typedef struct plc_timers_s5_timer {
   /**
-   * The CPU time of the previous call, in ms.
+   * The latest CPU time a call saw, in ms (the previous call's unless the clock went back).
    */
   uint64_t last_call_ms;
   /**
@@ -1436,17 +1543,18 @@ typedef struct plc_timers_iec_timer {
 } plc_timers_iec_timer;
 
 /**
- * The inputs of one call of an IEC timer.
+ * The inputs of one call of an IEC timer. The input bits are bytes: 0 is FALSE, any other
+ * value TRUE.
  */
 typedef struct plc_timers_iec_input {
   /**
-   * `IN`.
+   * `IN` (0 FALSE, any other byte TRUE).
    */
-  bool in;
+  uint8_t in;
   /**
-   * `R`, the reset of `TONR` (ignored by `TP`, `TON`, `TOF`).
+   * `R`, the reset of `TONR` (ignored by `TP`, `TON`, `TOF`; 0 FALSE, any other byte TRUE).
    */
-  bool r;
+  uint8_t r;
   /**
    * `PT`, the preset: a `TIME` in milliseconds; a negative value is taken as 0.
    */
@@ -1470,6 +1578,14 @@ typedef struct plc_timers_iec_output {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * The version of the library linked, `major * 10000 + minor * 100 + patch`: compare it with
+ * the header's `PLC_TIMERS_VERSION` to detect a header used with another library. Within one
+ * `0.minor` series (one soname, `libplc_timers.so.0.minor`) the ABI does not change, so
+ * `plc_timers_version() / 100 == PLC_TIMERS_VERSION / 100` is the compatibility check.
+ */
+uint32_t plc_timers_version(void);
 
 /**
  * Initializes an IEC counter of type SINT (reference form): CV = 0, no edge seen (the same as
@@ -1952,6 +2068,51 @@ plc_timers_status plc_timers_s5_counter_call(struct plc_timers_s5_counter *count
                                              struct plc_timers_s5_counter_output *out);
 
 /**
+ * `plc_timers_s5_counter_ref_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+ * holds `C#n`).
+ *
+ * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+ * (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+ * (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+ *
+ * # Safety
+ * `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+ */
+plc_timers_status plc_timers_s5_counter_ref_call_bcd(struct plc_timers_s5_counter_ref *counter,
+                                                     int32_t kind,
+                                                     struct plc_timers_s5_counter_input_bcd input,
+                                                     struct plc_timers_s5_counter_output *out);
+
+/**
+ * `plc_timers_s5_counter_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+ * holds `C#n`).
+ *
+ * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+ * (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+ * (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+ *
+ * # Safety
+ * `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+ */
+plc_timers_status plc_timers_s5_counter_call_bcd(struct plc_timers_s5_counter *counter,
+                                                 int32_t kind,
+                                                 struct plc_timers_s5_counter_input_bcd input,
+                                                 struct plc_timers_s5_counter_output *out);
+
+/**
+ * The count of the S5 counter preset BCD word `pv_bcd` (`C#123`, held as `W#16#0123`, gives
+ * 123), written to `count`: the one conversion between the two representations, checked.
+ *
+ * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+ * (`count`); `PLC_TIMERS_INVALID_BCD_PRESET` (a digit above 9 or bits 15-12 set).
+ *
+ * # Safety
+ * `count` is NULL or points to memory valid for writes of its type.
+ */
+plc_timers_status plc_timers_s5_count_from_bcd(plc_timers_bcd_word pv_bcd,
+                                               plc_timers_s5_count *count);
+
+/**
  * Parses an S5TIME literal: `S5T#aH_bbM_ccS_dddMS` or `S5TIME#…` (case-insensitive, underscores
  * optional, units H, M, S, MS from largest to smallest, each at most once; the time base is the
  * finest whose value fits in 999 units, the value rounded down), or a word `W#16#wxyz` (BCD
@@ -2056,7 +2217,7 @@ plc_timers_status plc_timers_timer_memory_tick(struct plc_timers_timer_memory *t
  */
 plc_timers_status plc_timers_timer_memory_fr(struct plc_timers_timer_memory *timers,
                                              size_t index,
-                                             bool rlo);
+                                             uint8_t rlo);
 
 /**
  * `SP`/`SE`/`SD`/`SS`/`SF T index` (the start operation of `kind`, a `plc_timers_s5_kind`)
@@ -2070,7 +2231,7 @@ plc_timers_status plc_timers_timer_memory_fr(struct plc_timers_timer_memory *tim
 plc_timers_status plc_timers_timer_memory_start(struct plc_timers_timer_memory *timers,
                                                 size_t index,
                                                 int32_t kind,
-                                                bool rlo,
+                                                uint8_t rlo,
                                                 uint16_t tv);
 
 /**
@@ -2083,7 +2244,7 @@ plc_timers_status plc_timers_timer_memory_start(struct plc_timers_timer_memory *
  */
 plc_timers_status plc_timers_timer_memory_reset(struct plc_timers_timer_memory *timers,
                                                 size_t index,
-                                                bool rlo);
+                                                uint8_t rlo);
 
 /**
  * `L T index`: writes the remaining value of the timer, in binary (units of its base, 0 to
@@ -2160,7 +2321,7 @@ plc_timers_status plc_timers_counter_memory_init(struct plc_timers_counter_memor
  */
 plc_timers_status plc_timers_counter_memory_fr(struct plc_timers_counter_memory *counters,
                                                size_t index,
-                                               bool rlo);
+                                               uint8_t rlo);
 
 /**
  * `CU C index` with RLO `rlo`: a rising RLO counts up (CV stays at most 999).
@@ -2172,7 +2333,7 @@ plc_timers_status plc_timers_counter_memory_fr(struct plc_timers_counter_memory 
  */
 plc_timers_status plc_timers_counter_memory_cu(struct plc_timers_counter_memory *counters,
                                                size_t index,
-                                               bool rlo);
+                                               uint8_t rlo);
 
 /**
  * `CD C index` with RLO `rlo`: a rising RLO counts down (CV stays at least 0).
@@ -2184,7 +2345,7 @@ plc_timers_status plc_timers_counter_memory_cu(struct plc_timers_counter_memory 
  */
 plc_timers_status plc_timers_counter_memory_cd(struct plc_timers_counter_memory *counters,
                                                size_t index,
-                                               bool rlo);
+                                               uint8_t rlo);
 
 /**
  * `R C index` with RLO `rlo`: RLO 1 resets CV to 0.
@@ -2196,10 +2357,11 @@ plc_timers_status plc_timers_counter_memory_cd(struct plc_timers_counter_memory 
  */
 plc_timers_status plc_timers_counter_memory_reset(struct plc_timers_counter_memory *counters,
                                                   size_t index,
-                                                  bool rlo);
+                                                  uint8_t rlo);
 
 /**
- * `S C index` with RLO `rlo`: a rising RLO sets CV to the preset `pv` (a count, 0 to 999).
+ * `S C index` with RLO `rlo`: a rising RLO sets CV to the preset `pv`, a count 0 to 999 in
+ * binary (`C#123` is 123; for the BCD word the PLC holds, `plc_timers_counter_memory_set_bcd`).
  *
  * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_PRESET` (`pv` above 999).
  *
@@ -2208,8 +2370,22 @@ plc_timers_status plc_timers_counter_memory_reset(struct plc_timers_counter_memo
  */
 plc_timers_status plc_timers_counter_memory_set(struct plc_timers_counter_memory *counters,
                                                 size_t index,
-                                                bool rlo,
-                                                uint16_t pv);
+                                                uint8_t rlo,
+                                                plc_timers_s5_count pv);
+
+/**
+ * `S C index` as the PLC executes it after `L C#n`: a rising RLO sets CV to the preset
+ * `pv_bcd`, the BCD word in ACCU 1 (`C#123` is `W#16#0123`), each digit checked.
+ *
+ * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_BCD_PRESET` (a digit above 9 or bits 15-12 set).
+ *
+ * # Safety
+ * `counters` is NULL or points to memory valid for reads and writes of its type.
+ */
+plc_timers_status plc_timers_counter_memory_set_bcd(struct plc_timers_counter_memory *counters,
+                                                    size_t index,
+                                                    uint8_t rlo,
+                                                    plc_timers_bcd_word pv_bcd);
 
 /**
  * `L C index`: writes the count in binary (0 to 999) to `value`.
@@ -2221,7 +2397,7 @@ plc_timers_status plc_timers_counter_memory_set(struct plc_timers_counter_memory
  */
 plc_timers_status plc_timers_counter_memory_load(const struct plc_timers_counter_memory *counters,
                                                  size_t index,
-                                                 uint16_t *value);
+                                                 plc_timers_s5_count *value);
 
 /**
  * `LC C index`: writes the count as three BCD digits to `value`.
@@ -2233,7 +2409,7 @@ plc_timers_status plc_timers_counter_memory_load(const struct plc_timers_counter
  */
 plc_timers_status plc_timers_counter_memory_load_bcd(const struct plc_timers_counter_memory *counters,
                                                      size_t index,
-                                                     uint16_t *value);
+                                                     plc_timers_bcd_word *value);
 
 /**
  * `A C index`: writes the counter status (CV != 0) to `q`.
@@ -2261,6 +2437,21 @@ plc_timers_status plc_timers_counter_memory_call(struct plc_timers_counter_memor
                                                  int32_t kind,
                                                  struct plc_timers_s5_counter_input input,
                                                  struct plc_timers_s5_counter_output *out);
+
+/**
+ * `plc_timers_counter_memory_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+ * holds `C#n`).
+ *
+ * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET` (`input.pv_bcd`).
+ *
+ * # Safety
+ * `counters` and `out` are NULL or point to memory valid for reads and writes of their types.
+ */
+plc_timers_status plc_timers_counter_memory_call_bcd(struct plc_timers_counter_memory *counters,
+                                                     size_t index,
+                                                     int32_t kind,
+                                                     struct plc_timers_s5_counter_input_bcd input,
+                                                     struct plc_timers_s5_counter_output *out);
 
 /**
  * The message for the status `code`: a static NUL-terminated string (never NULL, never to be
@@ -2294,7 +2485,8 @@ plc_timers_status plc_timers_s5_timer_init(struct plc_timers_s5_timer *timer);
  * One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
  * the reference semantics: the OS ticks of the timer's base since its previous call are applied
  * (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic of the
- * kind and `R`. `now_ms` is not before the previous call's (an earlier time applies no ticks).
+ * kind and `R`. `now_ms` must not go back: an earlier time applies no tick and `last_call_ms`
+ * keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's clock does.
  * The outputs are written to `out`.
  *
  * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
@@ -2436,7 +2628,7 @@ plc_timers_status plc_timers_iec_timer_ref_preset(struct plc_timers_iec_timer_re
                                                   int32_t pt_ms);
 
 /**
- * A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` false) returns
+ * A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` 0) returns
  * to its initial values; a retentive one keeps its data.
  *
  * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
@@ -2446,7 +2638,7 @@ plc_timers_status plc_timers_iec_timer_ref_preset(struct plc_timers_iec_timer_re
  * `timer` is NULL or points to memory valid for reads and writes of its type.
  */
 plc_timers_status plc_timers_iec_timer_ref_run_stop_run(struct plc_timers_iec_timer_ref *timer,
-                                                        bool retentive);
+                                                        uint8_t retentive);
 
 /**
  * Reads `Q` through the structure at CPU time `now_ms` (optimized form): as on the CPU, the update
@@ -2502,7 +2694,7 @@ plc_timers_status plc_timers_iec_timer_reset(struct plc_timers_iec_timer *timer)
 plc_timers_status plc_timers_iec_timer_preset(struct plc_timers_iec_timer *timer, int32_t pt_ms);
 
 /**
- * A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` false) returns
+ * A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` 0) returns
  * to its initial values; a retentive one keeps its data.
  *
  * Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
@@ -2512,7 +2704,7 @@ plc_timers_status plc_timers_iec_timer_preset(struct plc_timers_iec_timer *timer
  * `timer` is NULL or points to memory valid for reads and writes of its type.
  */
 plc_timers_status plc_timers_iec_timer_run_stop_run(struct plc_timers_iec_timer *timer,
-                                                    bool retentive);
+                                                    uint8_t retentive);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -16,7 +16,7 @@ use plc_timers::counter::{
 };
 
 use crate::status::plc_timers_status::{self, *};
-use crate::{flag, init, on_state, Mirror};
+use crate::{bit, flag, init, on_state, Mirror};
 
 // ---------------------------------------------------------------------------------------------
 // IEC counters
@@ -44,18 +44,19 @@ fn counter_kind(kind: i32) -> Result<CounterKind, plc_timers_status> {
 }
 
 /// The inputs of one call of an IEC counter over the integer type `T`. The inputs an
-/// instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored.
+/// instruction lacks (CD and LD of CTU, CU and R of CTD) are ignored. The input bits are bytes:
+/// 0 is FALSE, any other value TRUE.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_counter_input<T> {
     /// `CU`, count up on a rising edge.
-    pub cu: bool,
+    pub cu: u8,
     /// `CD`, count down on a rising edge.
-    pub cd: bool,
+    pub cd: u8,
     /// `R`, reset CV to 0 (level).
-    pub r: bool,
+    pub r: u8,
     /// `LD`, load PV into CV (level).
-    pub ld: bool,
+    pub ld: u8,
     /// `PV`, the preset.
     pub pv: T,
 }
@@ -184,10 +185,10 @@ where
             let kind = counter_kind(kind)?;
             let i = input;
             let input = CounterInput {
-                cu: i.cu,
-                cd: i.cd,
-                r: i.r,
-                ld: i.ld,
+                cu: bit(i.cu),
+                cd: bit(i.cd),
+                r: bit(i.r),
+                ld: bit(i.ld),
                 pv: i.pv,
             };
             let o = c.call(kind, input);
@@ -225,41 +226,97 @@ pub(crate) fn s5_counter_kind(kind: i32) -> Result<S5CounterKind, plc_timers_sta
     })
 }
 
+/// An S5 counter value or preset in binary: the count itself, 0 to 999 (`C#5` is 5, `C#123`
+/// is 123). What `L C n` loads and what `plc_timers_counter_preset_parse` writes.
+pub type plc_timers_s5_count = u16;
+
+/// An S5 counter value or preset as the PLC holds a `C#` constant: three BCD digits in bits
+/// 11-0, bits 15-12 zero (`C#5` is `W#16#0005`, `C#123` is `W#16#0123`). What `LC C n` loads and
+/// what `S C n` takes from ACCU 1. The `_bcd` functions take it and check every digit; it is
+/// never taken for a count (0x0123 is 123, not 291).
+pub type plc_timers_bcd_word = u16;
+
 /// The S5 counter preset of the count `pv`.
-pub(crate) fn counter_preset(pv: u16) -> Result<CounterPreset, plc_timers_status> {
+pub(crate) fn counter_preset(pv: plc_timers_s5_count) -> Result<CounterPreset, plc_timers_status> {
     CounterPreset::new(pv).map_err(|_| PLC_TIMERS_INVALID_PRESET)
 }
 
-/// The inputs of one S5 counter box call. The inputs a box lacks (CD of S_CU, CU of S_CD) are
-/// ignored.
+/// The S5 counter preset of the BCD word `pv_bcd` (SC-BCD-01: each digit checked).
+pub(crate) fn counter_preset_bcd(
+    pv_bcd: plc_timers_bcd_word,
+) -> Result<CounterPreset, plc_timers_status> {
+    CounterPreset::from_bcd(pv_bcd).map_err(|_| PLC_TIMERS_INVALID_BCD_PRESET)
+}
+
+/// The inputs of one S5 counter box call, the preset as a count (binary). The inputs a box
+/// lacks (CD of S_CU, CU of S_CD) are ignored. The input bits are bytes: 0 is FALSE, any other
+/// value TRUE. `plc_timers_s5_counter_input_bcd` is the same with the preset as a BCD word.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_counter_input {
     /// `CU` (`ZV`), count up on a rising edge.
-    pub cu: bool,
+    pub cu: u8,
     /// `CD` (`ZR`), count down on a rising edge.
-    pub cd: bool,
+    pub cd: u8,
     /// `S`, set CV to PV on a rising edge.
-    pub s: bool,
+    pub s: u8,
     /// `R`, reset CV to 0 (level).
-    pub r: bool,
-    /// `FR`, the enable (STL `FR C n`; the LAD boxes have none: false).
-    pub fr: bool,
-    /// `PV`, the preset as a count 0 to 999 (binary; `C#5` is 5), e.g. from
-    /// `plc_timers_counter_preset_parse`.
-    pub pv: u16,
+    pub r: u8,
+    /// `FR`, the enable (STL `FR C n`; the LAD boxes have none: 0).
+    pub fr: u8,
+    /// `PV`, the preset as a count 0 to 999 (binary: `C#5` is 5, `C#123` is 123), e.g. from
+    /// `plc_timers_counter_preset_parse`; above 999 is `PLC_TIMERS_INVALID_PRESET`.
+    pub pv: plc_timers_s5_count,
 }
 
-impl plc_timers_s5_counter_input {
-    /// The library's inputs.
-    pub(crate) fn load(self) -> Result<S5CounterInput, plc_timers_status> {
+/// The inputs of one S5 counter box call with the preset as the PLC holds it, a BCD word
+/// (`C#123` is `W#16#0123`); otherwise as `plc_timers_s5_counter_input`. A word with a digit
+/// above 9 or bits 15-12 set is `PLC_TIMERS_INVALID_BCD_PRESET`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_s5_counter_input_bcd {
+    /// `CU` (`ZV`), count up on a rising edge.
+    pub cu: u8,
+    /// `CD` (`ZR`), count down on a rising edge.
+    pub cd: u8,
+    /// `S`, set CV to PV on a rising edge.
+    pub s: u8,
+    /// `R`, reset CV to 0 (level).
+    pub r: u8,
+    /// `FR`, the enable (STL `FR C n`; the LAD boxes have none: 0).
+    pub fr: u8,
+    /// `PV`, the preset as a BCD word (`W#16#0000` to `W#16#0999`).
+    pub pv_bcd: plc_timers_bcd_word,
+}
+
+/// An S5 counter input struct of C: the preset in one representation, checked on load.
+pub(crate) trait S5CounterInputC: Copy {
+    /// The library's inputs, or the status of a preset that is not one.
+    fn load(self) -> Result<S5CounterInput, plc_timers_status>;
+}
+
+impl S5CounterInputC for plc_timers_s5_counter_input {
+    fn load(self) -> Result<S5CounterInput, plc_timers_status> {
         Ok(S5CounterInput {
-            cu: self.cu,
-            cd: self.cd,
-            s: self.s,
-            r: self.r,
-            fr: self.fr,
+            cu: bit(self.cu),
+            cd: bit(self.cd),
+            s: bit(self.s),
+            r: bit(self.r),
+            fr: bit(self.fr),
             pv: counter_preset(self.pv)?,
+        })
+    }
+}
+
+impl S5CounterInputC for plc_timers_s5_counter_input_bcd {
+    fn load(self) -> Result<S5CounterInput, plc_timers_status> {
+        Ok(S5CounterInput {
+            cu: bit(self.cu),
+            cd: bit(self.cd),
+            s: bit(self.s),
+            r: bit(self.r),
+            fr: bit(self.fr),
+            pv: counter_preset_bcd(self.pv_bcd)?,
         })
     }
 }
@@ -271,9 +328,9 @@ pub struct plc_timers_s5_counter_output {
     /// `Q`: CV != 0.
     pub q: bool,
     /// `CV` (`DUAL`), the count in binary, 0 to 999.
-    pub cv: u16,
+    pub cv: plc_timers_s5_count,
     /// `CV_BCD` (`DEZ`), the count as three BCD digits.
-    pub cv_bcd: u16,
+    pub cv_bcd: plc_timers_bcd_word,
 }
 
 impl From<plc_timers::counter::s5::S5CounterOutput> for plc_timers_s5_counter_output {
@@ -372,7 +429,7 @@ const _: () = assert!(
 unsafe fn s5_counter_call<M: Mirror>(
     counter: *mut M,
     kind: i32,
-    input: plc_timers_s5_counter_input,
+    input: impl S5CounterInputC,
     out: *mut plc_timers_s5_counter_output,
 ) -> plc_timers_status
 where
@@ -1085,4 +1142,66 @@ pub unsafe extern "C" fn plc_timers_s5_counter_call(
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe { s5_counter_call(counter, kind, input, out) }
+}
+
+/// `plc_timers_s5_counter_ref_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+/// holds `C#n`).
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+/// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_ref_call_bcd(
+    counter: *mut plc_timers_s5_counter_ref,
+    kind: i32,
+    input: plc_timers_s5_counter_input_bcd,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { s5_counter_call(counter, kind, input, out) }
+}
+
+/// `plc_timers_s5_counter_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+/// holds `C#n`).
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+/// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+///
+/// # Safety
+/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_counter_call_bcd(
+    counter: *mut plc_timers_s5_counter,
+    kind: i32,
+    input: plc_timers_s5_counter_input_bcd,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { s5_counter_call(counter, kind, input, out) }
+}
+
+/// The count of the S5 counter preset BCD word `pv_bcd` (`C#123`, held as `W#16#0123`, gives
+/// 123), written to `count`: the one conversion between the two representations, checked.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+/// (`count`); `PLC_TIMERS_INVALID_BCD_PRESET` (a digit above 9 or bits 15-12 set).
+///
+/// # Safety
+/// `count` is NULL or points to memory valid for writes of its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_s5_count_from_bcd(
+    pv_bcd: plc_timers_bcd_word,
+    count: *mut plc_timers_s5_count,
+) -> plc_timers_status {
+    crate::guard(|| {
+        let count = crate::checked_mut(count)?;
+        let value = counter_preset_bcd(pv_bcd)?.value();
+        // SAFETY: checked non-NULL and aligned; `write` does not read the old value.
+        unsafe { count.write(value) };
+        Ok(())
+    })
 }

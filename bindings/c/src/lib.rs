@@ -72,6 +72,52 @@ pub mod timers;
 pub use status::plc_timers_status;
 use status::plc_timers_status::*;
 
+/// The major version of the library this header belongs to (`PLC_TIMERS_VERSION_MAJOR`).
+pub const PLC_TIMERS_VERSION_MAJOR: u32 = 0;
+/// The minor version of the library this header belongs to.
+pub const PLC_TIMERS_VERSION_MINOR: u32 = 1;
+/// The patch version of the library this header belongs to.
+pub const PLC_TIMERS_VERSION_PATCH: u32 = 0;
+/// The version of the library this header belongs to, as one number: major * 10000 + minor *
+/// 100 + patch (0.1.0 is 100), as `plc_timers_version` returns it for the library linked.
+pub const PLC_TIMERS_VERSION: u32 = 100;
+
+/// This library's version, `major * 10000 + minor * 100 + patch`, from Cargo's version of the
+/// crate (`version_macros_are_cargos_version` checks the header's macros against it).
+const VERSION: u32 = version_number(&[
+    env!("CARGO_PKG_VERSION_MAJOR").as_bytes(),
+    env!("CARGO_PKG_VERSION_MINOR").as_bytes(),
+    env!("CARGO_PKG_VERSION_PATCH").as_bytes(),
+]);
+
+/// `parts` (decimal digits each) as one number, two decimal places per part after the first.
+/// Evaluated at compile time only, where an overflow is a build error.
+#[allow(clippy::arithmetic_side_effects, clippy::indexing_slicing)]
+const fn version_number(parts: &[&[u8]]) -> u32 {
+    let mut v: u32 = 0;
+    let mut i = 0;
+    while i < parts.len() {
+        let mut n: u32 = 0;
+        let mut j = 0;
+        while j < parts[i].len() {
+            n = n * 10 + (parts[i][j] - b'0') as u32;
+            j += 1;
+        }
+        v = v * 100 + n;
+        i += 1;
+    }
+    v
+}
+
+/// The version of the library linked, `major * 10000 + minor * 100 + patch`: compare it with
+/// the header's `PLC_TIMERS_VERSION` to detect a header used with another library. Within one
+/// `0.minor` series (one soname, `libplc_timers.so.0.minor`) the ABI does not change, so
+/// `plc_timers_version() / 100 == PLC_TIMERS_VERSION / 100` is the compatibility check.
+#[no_mangle]
+pub extern "C" fn plc_timers_version() -> u32 {
+    VERSION
+}
+
 /// Runs `body`, turning its error into the status it carries and a panic (which no path of
 /// `body` should have, see the crate docs) into `PLC_TIMERS_INTERNAL_ERROR`, so that no unwind
 /// reaches the C caller.
@@ -191,6 +237,13 @@ pub(crate) unsafe fn init<M: Mirror>(state: *mut M, initial: M::Core) -> plc_tim
     })
 }
 
+/// An input bit as C passes it (a struct field or a flag parameter, `uint8_t`): 0 is FALSE,
+/// any other byte TRUE, as a runtime's process-image byte means. A C `bool` would make any
+/// byte but 0 and 1 undefined behaviour on this side, so no input crosses as `bool`.
+pub(crate) const fn bit(byte: u8) -> bool {
+    byte != 0
+}
+
 /// A flag byte of a C state struct: 0 or 1, anything else is not a state.
 pub(crate) fn flag(byte: u8) -> Option<bool> {
     match byte {
@@ -207,6 +260,29 @@ mod tests {
         plc_timers_iec_input, plc_timers_iec_output, plc_timers_iec_timer,
         plc_timers_iec_timer_call, plc_timers_iec_timer_init,
     };
+
+    /// The header's version macros are the crate's version, which `plc_timers_version`
+    /// returns (Cargo's, not a copy of the macros).
+    #[test]
+    fn version_macros_are_cargos_version() {
+        use crate::{
+            PLC_TIMERS_VERSION, PLC_TIMERS_VERSION_MAJOR, PLC_TIMERS_VERSION_MINOR,
+            PLC_TIMERS_VERSION_PATCH,
+        };
+        assert_eq!(
+            env!("CARGO_PKG_VERSION"),
+            format!(
+                "{PLC_TIMERS_VERSION_MAJOR}.{PLC_TIMERS_VERSION_MINOR}.{PLC_TIMERS_VERSION_PATCH}"
+            )
+        );
+        assert_eq!(
+            PLC_TIMERS_VERSION,
+            PLC_TIMERS_VERSION_MAJOR * 10000
+                + PLC_TIMERS_VERSION_MINOR * 100
+                + PLC_TIMERS_VERSION_PATCH
+        );
+        assert_eq!(crate::plc_timers_version(), PLC_TIMERS_VERSION);
+    }
 
     /// A misaligned pointer (which C cannot form without undefined behaviour, so the C tests
     /// cannot pass one) is refused with `PLC_TIMERS_MISALIGNED_POINTER`, before any access.

@@ -11,11 +11,13 @@ use plc_timers::s5::{TimerMemory, TimerWord};
 use plc_timers::time::CpuTime;
 
 use crate::counters::{
-    counter_preset, plc_timers_s5_counter_input, plc_timers_s5_counter_output, s5_counter_kind,
+    counter_preset, counter_preset_bcd, plc_timers_bcd_word, plc_timers_s5_count,
+    plc_timers_s5_counter_input, plc_timers_s5_counter_input_bcd, plc_timers_s5_counter_output,
+    s5_counter_kind, S5CounterInputC,
 };
 use crate::status::plc_timers_status::{self, *};
 use crate::timers::{plc_timers_s5_input, plc_timers_s5_output, s5_kind, s5time, time_base};
-use crate::{init, on_state, on_state_only, read_state, Mirror};
+use crate::{bit, init, on_state, on_state_only, read_state, Mirror};
 
 /// The number of timers in a `plc_timers_timer_memory`: `T 0` to `T 255`.
 pub const PLC_TIMERS_TIMER_COUNT: usize = 256;
@@ -176,10 +178,10 @@ pub unsafe extern "C" fn plc_timers_timer_memory_tick(
 pub unsafe extern "C" fn plc_timers_timer_memory_fr(
     timers: *mut plc_timers_timer_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(timers, |m| m.fr(index, rlo).map_err(no_such_operand)) }
+    unsafe { on_state_only(timers, |m| m.fr(index, bit(rlo)).map_err(no_such_operand)) }
 }
 
 /// `SP`/`SE`/`SD`/`SS`/`SF T index` (the start operation of `kind`, a `plc_timers_s5_kind`)
@@ -194,7 +196,7 @@ pub unsafe extern "C" fn plc_timers_timer_memory_start(
     timers: *mut plc_timers_timer_memory,
     index: usize,
     kind: i32,
-    rlo: bool,
+    rlo: u8,
     tv: u16,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
@@ -202,7 +204,7 @@ pub unsafe extern "C" fn plc_timers_timer_memory_start(
         on_state_only(timers, |m| {
             let kind = s5_kind(kind)?;
             let tv = s5time(tv)?;
-            m.start(index, kind, rlo, tv).map_err(no_such_operand)
+            m.start(index, kind, bit(rlo), tv).map_err(no_such_operand)
         })
     }
 }
@@ -217,10 +219,14 @@ pub unsafe extern "C" fn plc_timers_timer_memory_start(
 pub unsafe extern "C" fn plc_timers_timer_memory_reset(
     timers: *mut plc_timers_timer_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(timers, |m| m.reset(index, rlo).map_err(no_such_operand)) }
+    unsafe {
+        on_state_only(timers, |m| {
+            m.reset(index, bit(rlo)).map_err(no_such_operand)
+        })
+    }
 }
 
 /// `L T index`: writes the remaining value of the timer, in binary (units of its base, 0 to
@@ -330,10 +336,10 @@ pub unsafe extern "C" fn plc_timers_counter_memory_init(
 pub unsafe extern "C" fn plc_timers_counter_memory_fr(
     counters: *mut plc_timers_counter_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(counters, |m| m.fr(index, rlo).map_err(no_such_operand)) }
+    unsafe { on_state_only(counters, |m| m.fr(index, bit(rlo)).map_err(no_such_operand)) }
 }
 
 /// `CU C index` with RLO `rlo`: a rising RLO counts up (CV stays at most 999).
@@ -346,10 +352,10 @@ pub unsafe extern "C" fn plc_timers_counter_memory_fr(
 pub unsafe extern "C" fn plc_timers_counter_memory_cu(
     counters: *mut plc_timers_counter_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(counters, |m| m.cu(index, rlo).map_err(no_such_operand)) }
+    unsafe { on_state_only(counters, |m| m.cu(index, bit(rlo)).map_err(no_such_operand)) }
 }
 
 /// `CD C index` with RLO `rlo`: a rising RLO counts down (CV stays at least 0).
@@ -362,10 +368,10 @@ pub unsafe extern "C" fn plc_timers_counter_memory_cu(
 pub unsafe extern "C" fn plc_timers_counter_memory_cd(
     counters: *mut plc_timers_counter_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(counters, |m| m.cd(index, rlo).map_err(no_such_operand)) }
+    unsafe { on_state_only(counters, |m| m.cd(index, bit(rlo)).map_err(no_such_operand)) }
 }
 
 /// `R C index` with RLO `rlo`: RLO 1 resets CV to 0.
@@ -378,13 +384,18 @@ pub unsafe extern "C" fn plc_timers_counter_memory_cd(
 pub unsafe extern "C" fn plc_timers_counter_memory_reset(
     counters: *mut plc_timers_counter_memory,
     index: usize,
-    rlo: bool,
+    rlo: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
-    unsafe { on_state_only(counters, |m| m.reset(index, rlo).map_err(no_such_operand)) }
+    unsafe {
+        on_state_only(counters, |m| {
+            m.reset(index, bit(rlo)).map_err(no_such_operand)
+        })
+    }
 }
 
-/// `S C index` with RLO `rlo`: a rising RLO sets CV to the preset `pv` (a count, 0 to 999).
+/// `S C index` with RLO `rlo`: a rising RLO sets CV to the preset `pv`, a count 0 to 999 in
+/// binary (`C#123` is 123; for the BCD word the PLC holds, `plc_timers_counter_memory_set_bcd`).
 ///
 /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_PRESET` (`pv` above 999).
 ///
@@ -394,14 +405,37 @@ pub unsafe extern "C" fn plc_timers_counter_memory_reset(
 pub unsafe extern "C" fn plc_timers_counter_memory_set(
     counters: *mut plc_timers_counter_memory,
     index: usize,
-    rlo: bool,
-    pv: u16,
+    rlo: u8,
+    pv: plc_timers_s5_count,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe {
         on_state_only(counters, |m| {
             let pv = counter_preset(pv)?;
-            m.set(index, rlo, pv).map_err(no_such_operand)
+            m.set(index, bit(rlo), pv).map_err(no_such_operand)
+        })
+    }
+}
+
+/// `S C index` as the PLC executes it after `L C#n`: a rising RLO sets CV to the preset
+/// `pv_bcd`, the BCD word in ACCU 1 (`C#123` is `W#16#0123`), each digit checked.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_BCD_PRESET` (a digit above 9 or bits 15-12 set).
+///
+/// # Safety
+/// `counters` is NULL or points to memory valid for reads and writes of its type.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_memory_set_bcd(
+    counters: *mut plc_timers_counter_memory,
+    index: usize,
+    rlo: u8,
+    pv_bcd: plc_timers_bcd_word,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe {
+        on_state_only(counters, |m| {
+            let pv = counter_preset_bcd(pv_bcd)?;
+            m.set(index, bit(rlo), pv).map_err(no_such_operand)
         })
     }
 }
@@ -416,7 +450,7 @@ pub unsafe extern "C" fn plc_timers_counter_memory_set(
 pub unsafe extern "C" fn plc_timers_counter_memory_load(
     counters: *const plc_timers_counter_memory,
     index: usize,
-    value: *mut u16,
+    value: *mut plc_timers_s5_count,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe { read_state(counters, value, |m| m.load(index).map_err(no_such_operand)) }
@@ -432,7 +466,7 @@ pub unsafe extern "C" fn plc_timers_counter_memory_load(
 pub unsafe extern "C" fn plc_timers_counter_memory_load_bcd(
     counters: *const plc_timers_counter_memory,
     index: usize,
-    value: *mut u16,
+    value: *mut plc_timers_bcd_word,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe {
@@ -471,6 +505,40 @@ pub unsafe extern "C" fn plc_timers_counter_memory_call(
     index: usize,
     kind: i32,
     input: plc_timers_s5_counter_input,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_memory_call(counters, index, kind, input, out) }
+}
+
+/// `plc_timers_counter_memory_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+/// holds `C#n`).
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`; `PLC_TIMERS_INVALID_STATE` (a word of the area); `PLC_TIMERS_NO_SUCH_OPERAND` (`index` above 255); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET` (`input.pv_bcd`).
+///
+/// # Safety
+/// `counters` and `out` are NULL or point to memory valid for reads and writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_counter_memory_call_bcd(
+    counters: *mut plc_timers_counter_memory,
+    index: usize,
+    kind: i32,
+    input: plc_timers_s5_counter_input_bcd,
+    out: *mut plc_timers_s5_counter_output,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { counter_memory_call(counters, index, kind, input, out) }
+}
+
+/// The counter box on the area with either input struct.
+///
+/// # Safety
+/// As the callers'.
+unsafe fn counter_memory_call(
+    counters: *mut plc_timers_counter_memory,
+    index: usize,
+    kind: i32,
+    input: impl S5CounterInputC,
     out: *mut plc_timers_s5_counter_output,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.

@@ -28,6 +28,9 @@ pub enum plc_timers_status {
     PLC_TIMERS_NO_SUCH_OPERAND = 7,
     /// A time base argument that is not one of `plc_timers_time_base`.
     PLC_TIMERS_INVALID_TIME_BASE = 8,
+    /// An S5 counter preset BCD word (`plc_timers_bcd_word`) with a digit above 9 or bits 15-12
+    /// set.
+    PLC_TIMERS_INVALID_BCD_PRESET = 9,
     /// Literal: the text is empty.
     PLC_TIMERS_LITERAL_EMPTY = 20,
     /// Literal: it does not start with an accepted prefix (`S5T#`, `S5TIME#`, `W#16#`; `T#`,
@@ -77,7 +80,7 @@ use plc_timers_status::*;
 
 /// Every status, for `plc_timers_status_message` (the C test `tests/status.c` asks it for the
 /// message of every constant of the header's enum, so that a status missing here fails).
-pub(crate) const ALL: [plc_timers_status; 29] = [
+pub(crate) const ALL: [plc_timers_status; 30] = [
     PLC_TIMERS_OK,
     PLC_TIMERS_NULL_POINTER,
     PLC_TIMERS_MISALIGNED_POINTER,
@@ -87,6 +90,7 @@ pub(crate) const ALL: [plc_timers_status; 29] = [
     PLC_TIMERS_INVALID_PRESET,
     PLC_TIMERS_NO_SUCH_OPERAND,
     PLC_TIMERS_INVALID_TIME_BASE,
+    PLC_TIMERS_INVALID_BCD_PRESET,
     PLC_TIMERS_LITERAL_EMPTY,
     PLC_TIMERS_LITERAL_PREFIX,
     PLC_TIMERS_LITERAL_NO_COMPONENTS,
@@ -130,6 +134,9 @@ const fn message(status: plc_timers_status) -> &'static CStr {
         }
         PLC_TIMERS_INVALID_TIME_BASE => {
             c"the time base is not one of plc_timers_time_base (0 = 10 ms, 1 = 100 ms, 2 = 1 s, 3 = 10 s)"
+        }
+        PLC_TIMERS_INVALID_BCD_PRESET => {
+            c"the S5 counter preset BCD word has a digit above 9 or bits 15-12 set (C#0 to C#999 are W#16#0000 to W#16#0999)"
         }
         PLC_TIMERS_LITERAL_EMPTY => c"invalid literal: the text is empty",
         PLC_TIMERS_LITERAL_PREFIX => {
@@ -208,7 +215,7 @@ mod tests {
             let m = unsafe { CStr::from_ptr(plc_timers_status_message(*s as i32)) };
             assert_eq!(m, message(*s));
         }
-        for code in [-1, 9, 19, 36, 43, 98, 100, i32::MIN, i32::MAX] {
+        for code in [-1, 10, 19, 36, 43, 98, 100, i32::MIN, i32::MAX] {
             // SAFETY: as above.
             let m = unsafe { CStr::from_ptr(plc_timers_status_message(code)) };
             assert_eq!(m, c"unknown status code", "code {code}");

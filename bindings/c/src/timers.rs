@@ -6,7 +6,7 @@ use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, 
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 
 use crate::status::plc_timers_status::{self, *};
-use crate::{flag, init, on_state, on_state_only, Mirror};
+use crate::{bit, flag, init, on_state, on_state_only, Mirror};
 
 // ---------------------------------------------------------------------------------------------
 // Kinds and inputs
@@ -94,16 +94,17 @@ pub(crate) fn s5time(tv: u16) -> Result<S5Time, plc_timers_status> {
     S5Time::from_word(tv).map_err(|_| PLC_TIMERS_INVALID_S5TIME)
 }
 
-/// The inputs of one execution of an S5 timer box.
+/// The inputs of one execution of an S5 timer box. The input bits are bytes, as a runtime's
+/// process image holds them: 0 is FALSE, any other value TRUE.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_input {
-    /// `S`, the start input.
-    pub s: bool,
-    /// `R`, the reset input.
-    pub r: bool,
-    /// `FR`, the enable input (STL `FR T n`; the LAD boxes have none: false).
-    pub fr: bool,
+    /// `S`, the start input (0 FALSE, any other byte TRUE).
+    pub s: u8,
+    /// `R`, the reset input (0 FALSE, any other byte TRUE).
+    pub r: u8,
+    /// `FR`, the enable input (STL `FR T n`; the LAD boxes have none: 0).
+    pub fr: u8,
     /// `TV`, the time value as an S5TIME word (`W#16#wxyz`: BCD value in bits 11-0, time base in
     /// bits 13-12, bits 15-14 ignored), e.g. from `plc_timers_s5time_parse`.
     pub tv: u16,
@@ -112,7 +113,7 @@ pub struct plc_timers_s5_input {
 impl plc_timers_s5_input {
     /// The library's inputs.
     pub(crate) fn load(self) -> Result<S5Input, plc_timers_status> {
-        Ok(S5Input::new(self.s, self.r, s5time(self.tv)?).with_fr(self.fr))
+        Ok(S5Input::new(bit(self.s), bit(self.r), s5time(self.tv)?).with_fr(bit(self.fr)))
     }
 }
 
@@ -138,21 +139,22 @@ impl From<plc_timers::s5::S5Output> for plc_timers_s5_output {
     }
 }
 
-/// The inputs of one call of an IEC timer.
+/// The inputs of one call of an IEC timer. The input bits are bytes: 0 is FALSE, any other
+/// value TRUE.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_iec_input {
-    /// `IN`.
-    pub r#in: bool,
-    /// `R`, the reset of `TONR` (ignored by `TP`, `TON`, `TOF`).
-    pub r: bool,
+    /// `IN` (0 FALSE, any other byte TRUE).
+    pub r#in: u8,
+    /// `R`, the reset of `TONR` (ignored by `TP`, `TON`, `TOF`; 0 FALSE, any other byte TRUE).
+    pub r: u8,
     /// `PT`, the preset: a `TIME` in milliseconds; a negative value is taken as 0.
     pub pt: i32,
 }
 
 impl From<plc_timers_iec_input> for IecInput {
     fn from(i: plc_timers_iec_input) -> IecInput {
-        IecInput::new(i.r#in, Time::from_millis(i.pt)).with_reset(i.r)
+        IecInput::new(bit(i.r#in), Time::from_millis(i.pt)).with_reset(bit(i.r))
     }
 }
 
@@ -175,8 +177,8 @@ pub struct plc_timers_iec_output {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_timer_ref {
-    /// The CPU time of the previous call, in ms: the OS ticks after it and up to the next call
-    /// are applied before that call.
+    /// The latest CPU time a call saw, in ms (the previous call's unless the clock went back):
+    /// the OS ticks after it and up to the next call are applied before that call.
     pub last_call_ms: u64,
     /// The remaining value in units of `base`, 0 to 999.
     pub value: u16,
@@ -233,7 +235,7 @@ impl Mirror for plc_timers_s5_timer_ref {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct plc_timers_s5_timer {
-    /// The CPU time of the previous call, in ms.
+    /// The latest CPU time a call saw, in ms (the previous call's unless the clock went back).
     pub last_call_ms: u64,
     /// The timer word: bits 9-0 the remaining value (binary, 0 to 999), bits 13-12 the time
     /// base, bit 16 running, bit 17 Q, bit 18 the status on expiry, bit 19 the S edge memory,
@@ -296,7 +298,8 @@ pub unsafe extern "C" fn plc_timers_s5_timer_init(
 /// One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
 /// the reference semantics: the OS ticks of the timer's base since its previous call are applied
 /// (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic of the
-/// kind and `R`. `now_ms` is not before the previous call's (an earlier time applies no ticks).
+/// kind and `R`. `now_ms` must not go back: an earlier time applies no tick and `last_call_ms`
+/// keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's clock does.
 /// The outputs are written to `out`.
 ///
 /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
@@ -656,7 +659,7 @@ pub unsafe extern "C" fn plc_timers_iec_timer_ref_preset(
     }
 }
 
-/// A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` false) returns
+/// A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` 0) returns
 /// to its initial values; a retentive one keeps its data.
 ///
 /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
@@ -667,12 +670,12 @@ pub unsafe extern "C" fn plc_timers_iec_timer_ref_preset(
 #[no_mangle]
 pub unsafe extern "C" fn plc_timers_iec_timer_ref_run_stop_run(
     timer: *mut plc_timers_iec_timer_ref,
-    retentive: bool,
+    retentive: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe {
         on_state_only(timer, |t| {
-            t.run_stop_run(retentive);
+            t.run_stop_run(bit(retentive));
             Ok(())
         })
     }
@@ -758,7 +761,7 @@ pub unsafe extern "C" fn plc_timers_iec_timer_preset(
     }
 }
 
-/// A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` false) returns
+/// A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` 0) returns
 /// to its initial values; a retentive one keeps its data.
 ///
 /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
@@ -769,12 +772,12 @@ pub unsafe extern "C" fn plc_timers_iec_timer_preset(
 #[no_mangle]
 pub unsafe extern "C" fn plc_timers_iec_timer_run_stop_run(
     timer: *mut plc_timers_iec_timer,
-    retentive: bool,
+    retentive: u8,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe {
         on_state_only(timer, |t| {
-            t.run_stop_run(retentive);
+            t.run_stop_run(bit(retentive));
             Ok(())
         })
     }

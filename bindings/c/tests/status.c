@@ -53,6 +53,7 @@ static const struct {
     CODE(PLC_TIMERS_INVALID_PRESET),
     CODE(PLC_TIMERS_NO_SUCH_OPERAND),
     CODE(PLC_TIMERS_INVALID_TIME_BASE),
+    CODE(PLC_TIMERS_INVALID_BCD_PRESET),
     CODE(PLC_TIMERS_LITERAL_EMPTY),
     CODE(PLC_TIMERS_LITERAL_PREFIX),
     CODE(PLC_TIMERS_LITERAL_NO_COMPONENTS),
@@ -377,6 +378,31 @@ static void counters(void) {
     CHECK(sout.q && sout.cv == 5 && sout.cv_bcd == 0x0005);
     EXPECT(PLC_TIMERS_OK, plc_timers_s5_counter_call(&sopt, PLC_TIMERS_S_CU, set, &sout));
     CHECK(sout.q && sout.cv == 5 && sout.cv_bcd == 0x0005);
+
+    /* The preset as the PLC holds C#123: the BCD word W#16#0123 is the count 123 (SC-BCD-01),
+     * never 0x0123 = 291; a digit above 9 or bits 15-12 set is a status, nothing written. */
+    plc_timers_s5_count count = 7;
+    EXPECT(PLC_TIMERS_OK, plc_timers_s5_count_from_bcd(0x0123, &count));
+    CHECK(count == 123);
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET, plc_timers_s5_count_from_bcd(0x012A, &count));
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET, plc_timers_s5_count_from_bcd(0x1000, &count));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_s5_count_from_bcd(0x0123, NULL));
+    CHECK(count == 123);
+    plc_timers_s5_counter_input_bcd set_bcd = {.s = 1, .pv_bcd = 0x0123};
+    plc_timers_s5_counter_input_bcd bad_bcd = {.s = 1, .pv_bcd = 0x00A0};
+    sref = sref0, sopt = sopt0;
+    FILL(sout), FILL(sout0);
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET,
+           plc_timers_s5_counter_ref_call_bcd(&sref, PLC_TIMERS_S_CU, bad_bcd, &sout));
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET,
+           plc_timers_s5_counter_call_bcd(&sopt, PLC_TIMERS_S_CU, bad_bcd, &sout));
+    UNCHANGED(sref, sref0);
+    UNCHANGED(sopt, sopt0);
+    UNCHANGED(sout, sout0);
+    EXPECT(PLC_TIMERS_OK, plc_timers_s5_counter_ref_call_bcd(&sref, PLC_TIMERS_S_CU, set_bcd, &sout));
+    CHECK(sout.q && sout.cv == 123 && sout.cv_bcd == 0x0123);
+    EXPECT(PLC_TIMERS_OK, plc_timers_s5_counter_call_bcd(&sopt, PLC_TIMERS_S_CU, set_bcd, &sout));
+    CHECK(sout.q && sout.cv == 123 && sout.cv_bcd == 0x0123);
 }
 
 static plc_timers_timer_memory timers;
@@ -447,6 +473,19 @@ static void memory_areas(void) {
     EXPECT(PLC_TIMERS_NO_SUCH_OPERAND, plc_timers_counter_memory_cu(&counter_area, 256, true));
     EXPECT(PLC_TIMERS_INVALID_PRESET, plc_timers_counter_memory_set(&counter_area, 0, true, 1000));
     EXPECT(PLC_TIMERS_INVALID_KIND, plc_timers_counter_memory_call(&counter_area, 0, 3, up, &sout));
+    /* S C n after L C#123: ACCU 1 holds W#16#0123, the count 123. */
+    EXPECT(PLC_TIMERS_OK, plc_timers_counter_memory_set_bcd(&counter_area, 4, 1, 0x0123));
+    EXPECT(PLC_TIMERS_OK, plc_timers_counter_memory_load(&counter_area, 4, &v));
+    CHECK(v == 123);
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET,
+           plc_timers_counter_memory_set_bcd(&counter_area, 5, 1, 0x0F00));
+    plc_timers_s5_counter_input_bcd set_bcd = {.s = 1, .pv_bcd = 0x0042};
+    EXPECT(PLC_TIMERS_OK,
+           plc_timers_counter_memory_call_bcd(&counter_area, 6, PLC_TIMERS_S_CU, set_bcd, &sout));
+    CHECK(sout.cv == 42 && sout.cv_bcd == 0x0042);
+    set_bcd.pv_bcd = 0x0999 + 1; /* 0x099A: a digit above 9 */
+    EXPECT(PLC_TIMERS_INVALID_BCD_PRESET,
+           plc_timers_counter_memory_call_bcd(&counter_area, 6, PLC_TIMERS_S_CU, set_bcd, &sout));
     EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_counter_memory_load(NULL, 0, &v));
     counter_area.words[7] = 0x03E8; /* CV 1000 */
     EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_counter_memory_status(&counter_area, 0, &q));
