@@ -596,6 +596,7 @@ fn iec_premise<C: ClockWord>(c: &IecCase<C>, rule: Rule) -> bool {
 }
 
 /// The IEC explanation, faithful, sound and complete for one call.
+#[covers]
 pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
     let Some(start) = IecTimerRef::from_state(c.state) else {
         return false;

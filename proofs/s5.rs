@@ -520,6 +520,7 @@ pub fn prop_sequence_equivalence_from(kind: S5Kind, initial: S5State, steps: &[(
 /// it went back is not counted again when the clock comes forward. The oracle is that monotone
 /// clock (whose behaviour S5-EQUIV-02 and the rule properties check); the forms checked are the
 /// reference, a lone [`S5Timer`] and a one-timer [`TimerMemory`] box.
+#[covers]
 pub fn prop_backward_clock(kind: S5Kind, initial: S5State, steps: &[(u64, S5Input)]) -> bool {
     let Some(w) = TimerWord::from_state(initial) else {
         return false;
