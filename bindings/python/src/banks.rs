@@ -28,7 +28,8 @@ const MAX_LANES: usize = 1 << 24;
 /// numpy, imported; without it an `ImportError` that names the extra to install. numpy is an
 /// optional dependency (the extra `numpy`): the numpy crate would panic where it fails to load
 /// numpy's C API, and a panic reaches Python as a `BaseException` that `except Exception` does
-/// not catch, so every entry of the banks asks first.
+/// not catch, so the banks' constructors ask first (every bank, pickled ones too, is made by
+/// one, so numpy is loaded whenever a bank exists).
 pub fn numpy_or_import_error(py: Python<'_>) -> PyResult<()> {
     py.import("numpy").map(drop).map_err(|e| {
         let err = PyImportError::new_err(format!(
@@ -340,7 +341,6 @@ impl PyTonBank {
         pt: &Bound<'py, PyAny>,
         out: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<TonArrays<'py>> {
-        numpy_or_import_error(py)?;
         let now = args::now_ms(now_ms)?;
         let n = self.n;
         let input = bool_bytes(in_, "in_", n)?;
@@ -750,7 +750,6 @@ impl PyCounterBank {
         ld: Option<&Bound<'py, PyAny>>,
         out: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        numpy_or_import_error(py)?;
         let n = self.n;
         let pv = counter_pv(pv, self.int_type, "pv")?;
         let read = |a: Option<&Bound<'py, PyAny>>, what: &str| {
