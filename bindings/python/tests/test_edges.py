@@ -5,11 +5,13 @@ pickles, threads, negative sizes and indices, the names the module exports."""
 from __future__ import annotations
 
 import copy
+import gc
 import pickle
 import random
 import subprocess
 import sys
 import threading
+import time
 from typing import Any, Callable, Dict, List, Tuple
 
 import numpy as np
@@ -376,8 +378,21 @@ def test_banks_copy_and_pickle() -> None:
 # --- threads ------------------------------------------------------------------------------------
 
 
+class GivesTheGilAway:
+    """Garbage whose collection runs Python code that lets another thread run: with the
+    collector run at every allocation, a scan that allocates (its output arrays, its tuple)
+    is interrupted there, as a program's finalizers may interrupt it at random."""
+
+    def __init__(self) -> None:
+        self.cycle = self
+
+    def __del__(self) -> None:
+        time.sleep(0)
+
+
 def test_banks_shared_by_threads() -> None:
-    """Two threads scanning one bank: every call runs (no 'Already borrowed'), one at a time."""
+    """Four threads scanning one bank, interrupted inside their scans: every call runs (no
+    'Already borrowed'), each scan whole."""
     n = 4096
     ton = plc_timers.TonBank(n)
     counters = plc_timers.CounterBank(n)
@@ -386,11 +401,14 @@ def test_banks_shared_by_threads() -> None:
     calls = [0]
     lock = threading.Lock()
     old = sys.getswitchinterval()
+    thresholds = gc.get_threshold()
     sys.setswitchinterval(1e-6)
+    gc.set_threshold(1, 1, 1)
 
     def work() -> None:
         try:
             for k in range(300):
+                GivesTheGilAway()
                 ton.scan(0, ones, pt)
                 ton.output(k % n)
                 counters.scan(pv=10**4, cu=ones if k % 2 else None)
@@ -408,6 +426,7 @@ def test_banks_shared_by_threads() -> None:
             t.join()
     finally:
         sys.setswitchinterval(old)
+        gc.set_threshold(*thresholds)
     assert errors == [] and calls[0] == 1200
     q, et = ton.scan(0, ones, pt)
     assert not q.any() and not et.any()  # IN 1 since 0 ms, PT 1000 s, at 0 ms
