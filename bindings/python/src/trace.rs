@@ -47,16 +47,20 @@ fn trace_exception(
 /// arguments a Python caller gives (`keyword argument pt`): the engine's messages are written
 /// for the command line, and a Python user never typed a flag.
 fn keywords(text: &str) -> String {
+    const OPTIONS: [&str; 4] = ["tv", "pt", "pv", "type"];
     let mut out = String::with_capacity(text.len() + 16);
     let mut rest = text;
     while let Some(at) = rest.find("--") {
-        let name_len = rest[at + 2..]
+        let after = &rest[at + 2..];
+        let name_len = after
             .bytes()
-            .take_while(u8::is_ascii_lowercase)
+            .take_while(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'-')
             .count();
-        if name_len == 0 {
+        let name = &after[..name_len];
+        if !OPTIONS.contains(&name) {
+            // Not an option of theirs (e.g. a cell's text shown in the message): as it is.
             out.push_str(&rest[..at + 2]);
-            rest = &rest[at + 2..];
+            rest = after;
             continue;
         }
         let before = &rest[..at];
@@ -64,11 +68,11 @@ fn keywords(text: &str) -> String {
         let before = before
             .strip_suffix("the option ")
             .or_else(|| before.strip_suffix("option "))
-            .map_or_else(|| format!("{before}the "), |b| format!("{b}the "));
-        out.push_str(&before);
-        out.push_str("keyword argument ");
-        out.push_str(&rest[at + 2..at + 2 + name_len]);
-        rest = &rest[at + 2 + name_len..];
+            .unwrap_or(before);
+        out.push_str(before);
+        out.push_str("the keyword argument ");
+        out.push_str(name);
+        rest = &after[name_len..];
     }
     out.push_str(rest);
     out
@@ -419,7 +423,16 @@ fn preset_value(
         ));
     }
     let Ok(text) = obj.cast::<PyString>() else {
-        return typed_preset(spec, obj, name);
+        // A value of the wrong type is the block classes' TypeError; a value out of range
+        // their ValueError, here as the TraceError (a ValueError) of the keyword argument.
+        return typed_preset(spec, obj, name).map_err(|e| {
+            if e.is_instance_of::<PyTypeError>(py) {
+                return e;
+            }
+            let message = e.value(py).to_string();
+            let text = format!("keyword argument {name}: {message}");
+            trace_exception(py, text, &message, None, None, None, Some(name))
+        });
     };
     let text = text.to_cow()?;
     PresetValue::parse(spec, &text).map_err(|e| {

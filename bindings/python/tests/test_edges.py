@@ -178,6 +178,31 @@ def test_run_and_check_refuse_a_preset_the_block_refuses(
     assert "--" not in str(by_run.value)
 
 
+@pytest.mark.parametrize(
+    ("block", "keyword", "value", "columns"),
+    [
+        ("TON", "pt", 2**31, ["t_ms", "IN"]),
+        ("S_ODT", "tv", 70000, ["t_ms", "S"]),
+        ("S_CU", "pv", 1000, ["CU"]),
+        ("CTU", "pv", 40000, ["CU"]),
+    ],
+)
+def test_run_and_check_refuse_a_preset_out_of_range_as_the_block_does(
+    block: str, keyword: str, value: int, columns: List[str]
+) -> None:
+    """An int outside the preset's range: the block class's ValueError, and in `run` and
+    `check` the TraceError (a ValueError) of the keyword argument with the same message."""
+    presets: Dict[str, Any] = {keyword: value}
+    with pytest.raises(ValueError) as by_class:
+        getattr(plc_timers, block)(**presets)
+    for fn in (plc_timers.run, plc_timers.check):
+        with pytest.raises(plc_timers.TraceError) as e:
+            fn(block, [dict.fromkeys(columns, 0)], **presets)
+        assert e.value.option == keyword
+        assert e.value.message == str(by_class.value)
+        assert str(e.value) == f"keyword argument {keyword}: {by_class.value}"
+
+
 def test_an_int_preset_cell_is_read_as_the_keyword_is() -> None:
     """An int TV is a word, PT milliseconds, PV a count, in a cell as in the keyword argument and
     the block class."""
