@@ -81,7 +81,7 @@ def main() -> None:
                          ("busy (50% of IN change per scan)", 0.5)):
         inputs = plant(rng, 64, toggle)
         rust = best_of(args.repeats,
-                       lambda: plc_timers._rust_ton_scan_seconds(inputs, pt, args.scans))
+                       lambda: plc_timers.plc_timers._rust_ton_scan_seconds(inputs, pt, args.scans))
         fresh = best_of(args.repeats, lambda: bench_scan(inputs, pt, args.scans, False))
         reuse = best_of(args.repeats, lambda: bench_scan(inputs, pt, args.scans, True))
         print(f"  {name:<34} {rust * 1e6:7.1f}us {fresh * 1e6:7.1f}us {fresh / rust:5.2f}x"

@@ -3,16 +3,17 @@
 //! a bank of `n` lanes here is a row of core banks of [`CHUNK`] lanes, the last one padded with
 //! lanes whose inputs stay 0.
 
+use std::sync::{Mutex, MutexGuard, PoisonError};
 use std::time::Instant;
 
 use numpy::{Element, PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
-use plc_timers::counter::{BankInputs, CounterBank, CounterInt};
-use plc_timers::iec::TonBank;
+use plc_timers::counter::{BankInputs, CounterBank, CounterInt, CounterState};
+use plc_timers::iec::{IecState, TonBank};
 use plc_timers::time::{CpuTime, Time};
 use plc_timers_cli::trace::IntType;
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyImportError, PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyList, PyTuple, PyType};
 
 use crate::args::{self, forward, shown, type_name};
 use crate::blocks::{counter_pv, int_type};
@@ -24,13 +25,49 @@ pub const CHUNK: usize = 1024;
 /// The most lanes a bank may have.
 const MAX_LANES: usize = 1 << 24;
 
-fn lanes(n: usize) -> PyResult<usize> {
-    if n == 0 || n > MAX_LANES {
-        return Err(PyValueError::new_err(format!(
-            "n is the number of lanes, 1..={MAX_LANES}; got {n}"
-        )));
+/// numpy, imported; without it an `ImportError` that names the extra to install. numpy is an
+/// optional dependency (the extra `numpy`): the numpy crate would panic where it fails to load
+/// numpy's C API, and a panic reaches Python as a `BaseException` that `except Exception` does
+/// not catch, so the banks' constructors ask first (every bank, pickled ones too, is made by
+/// one, so numpy is loaded whenever a bank exists).
+pub fn numpy_or_import_error(py: Python<'_>) -> PyResult<()> {
+    py.import("numpy").map(drop).map_err(|e| {
+        let err = PyImportError::new_err(format!(
+            "TonBank and CounterBank need numpy, which cannot be imported ({e}); install the \
+             extra: pip install plc-timers[numpy]"
+        ));
+        err.set_cause(py, Some(e));
+        err
+    })
+}
+
+/// The bank's state, locked. The lock is taken only around Rust code that makes no Python
+/// call (all arrays are read and borrowed before), so a thread holding it never gives the GIL
+/// away and a thread waiting for it never holds the GIL while the owner needs it. A panic
+/// inside leaves a state the core's invariants still hold (every lane's state is valid), so a
+/// poisoned lock is taken over, not a reason to fail every later call.
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// The number of lanes `n`: a whole number 1..=[`MAX_LANES`] (a negative one is a
+/// `ValueError` saying so, not pyo3's `OverflowError`).
+fn lanes(n: &Bound<'_, PyAny>) -> PyResult<usize> {
+    let allowed = format!("the number of lanes, 1..={MAX_LANES}");
+    let n = args::int_in::<i128>(n, "n", &allowed)?;
+    match usize::try_from(n) {
+        Ok(n) if (1..=MAX_LANES).contains(&n) => Ok(n),
+        _ => Err(PyValueError::new_err(format!("n is {allowed}; got {n}"))),
     }
-    Ok(n)
+}
+
+/// Lane `i` of a bank of `n` (`what` names a lane: "timer", "counter"), or an `IndexError`
+/// that says which lanes exist.
+fn lane(i: &Bound<'_, PyAny>, n: usize, what: &str) -> PyResult<usize> {
+    let i = args::int_in::<i128>(i, "i", "a lane number")?;
+    usize::try_from(i).ok().filter(|&i| i < n).ok_or_else(|| {
+        PyIndexError::new_err(format!("no {what} {i}: this bank has 0 to {}", n - 1))
+    })
 }
 
 /// A 1-D numpy array of `T` with `n` elements, read-only, as a slice; the error names the
@@ -47,13 +84,9 @@ fn array<'py, T: Element>(
              (np.asarray(x, dtype=np.{dtype}))"
         )
     };
-    let arr = obj.cast::<PyArray1<T>>().map_err(|_| {
-        let got = match (obj.getattr("dtype"), obj.getattr("shape")) {
-            (Ok(d), Ok(s)) => format!("an array of {} with shape {}", shown(&d), shown(&s)),
-            _ => format!("{} ({})", shown(obj), type_name(obj)),
-        };
-        PyTypeError::new_err(format!("{}; got {got}", wanted()))
-    })?;
+    let arr = obj
+        .cast::<PyArray1<T>>()
+        .map_err(|_| not_an_array(obj, &wanted()))?;
     if arr.len() != n {
         return Err(PyValueError::new_err(format!(
             "{}; got {} elements",
@@ -71,6 +104,49 @@ fn array<'py, T: Element>(
         )));
     }
     Ok(ro)
+}
+
+/// The `TypeError` for `obj`, which is not the array `wanted` describes: it says what it is.
+fn not_an_array(obj: &Bound<'_, PyAny>, wanted: &str) -> PyErr {
+    let got = match (obj.getattr("dtype"), obj.getattr("shape")) {
+        (Ok(d), Ok(s)) => format!("an array of {} with shape {}", shown(&d), shown(&s)),
+        _ => format!("{} ({})", shown(obj), type_name(obj)),
+    };
+    PyTypeError::new_err(format!("{wanted}; got {got}"))
+}
+
+/// `arr` (a numpy array of bool) viewed as its bytes, uint8.
+fn bytes_view<'py>(arr: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<u8>>> {
+    let py = arr.py();
+    arr.call_method1("view", (numpy::dtype::<u8>(py),))?
+        .cast_into::<PyArray1<u8>>()
+        .map_err(PyErr::from)
+}
+
+/// A 1-D numpy array of bool (or of uint8, a process image) with `n` elements, read as its
+/// bytes: non-zero is True. A numpy bool is a byte that numpy takes as True when it is not 0
+/// (`np.array([1, 2, 255], np.uint8).view(np.bool_)` shows `[True True True]`), while a Rust
+/// `bool` must be 0 or 1: such an array read as `&[bool]` would be undefined behaviour, so no
+/// bool array is ever read as one.
+fn bool_bytes<'py>(
+    obj: &Bound<'py, PyAny>,
+    what: &str,
+    n: usize,
+) -> PyResult<PyReadonlyArray1<'py, u8>> {
+    if obj.cast::<PyArray1<bool>>().is_ok() {
+        let bytes = bytes_view(obj)?;
+        array::<u8>(bytes.as_any(), what, "bool_", n)
+    } else if obj.cast::<PyArray1<u8>>().is_ok() {
+        array::<u8>(obj, what, "bool_", n)
+    } else {
+        Err(not_an_array(
+            obj,
+            &format!(
+                "{what} is a 1-D contiguous numpy array of bool_ (or of uint8, non-zero = True) \
+                 with {n} elements (np.asarray(x, dtype=np.bool_))"
+            ),
+        ))
+    }
 }
 
 /// A fresh output array, or the caller's (`out=`), checked.
@@ -99,6 +175,23 @@ fn output<'py, T: Element>(
             Ok(arr.clone())
         }
     }
+}
+
+/// A bool output array and the same memory as uint8.
+type BoolOutput<'py> = (Bound<'py, PyArray1<bool>>, Bound<'py, PyArray1<u8>>);
+
+/// A bool output array (fresh or the caller's) and its bytes, which the scan writes 0 or 1
+/// into: the caller's array may hold any bytes (`np.empty`), which a `&mut [bool]` must not
+/// cover.
+fn bool_output<'py>(
+    py: Python<'py>,
+    given: Option<&Bound<'py, PyAny>>,
+    what: &str,
+    n: usize,
+) -> PyResult<BoolOutput<'py>> {
+    let arr = output::<bool>(py, given, what, "bool_", n)?;
+    let bytes = bytes_view(arr.as_any())?;
+    Ok((arr, bytes))
 }
 
 /// `arr` borrowed writable, or an error that says why it cannot be.
@@ -140,6 +233,66 @@ fn out_pair<'py>(out: Option<&Bound<'py, PyAny>>) -> PyResult<OutPair<'py>> {
     }
 }
 
+/// The state of a TON bank: its chunks and the scratch arrays of one chunk.
+#[derive(Clone)]
+struct TonLanes {
+    banks: Vec<Box<TonBank<CHUNK>>>,
+    last: Option<CpuTime>,
+    /// The PT of one chunk as `Time`s, reused for every chunk.
+    pt: Box<[Time; CHUNK]>,
+    /// The IN of one chunk as bools (the lanes past `n` in the last chunk stay 0).
+    input: Box<[bool; CHUNK]>,
+    /// One chunk's Q and ET (ms, before the cast to int32).
+    q: Box<[bool; CHUNK]>,
+    et: Box<[u32; CHUNK]>,
+}
+
+impl TonLanes {
+    fn new(n: usize) -> TonLanes {
+        TonLanes {
+            banks: (0..n.div_ceil(CHUNK)).map(|_| Box::default()).collect(),
+            last: None,
+            pt: Box::new([Time::from_millis(0); CHUNK]),
+            input: Box::new([false; CHUNK]),
+            q: Box::new([false; CHUNK]),
+            et: Box::new([0; CHUNK]),
+        }
+    }
+
+    /// One scan: `input` as bytes (non-zero = IN), `pt` in ms; Q (0/1) and ET into `q`, `et`.
+    fn scan(&mut self, now: CpuTime, input: &[u8], preset: &[i32], q: &mut [u8], et: &mut [i32]) {
+        let chunks = self
+            .banks
+            .iter_mut()
+            .zip(q.chunks_mut(CHUNK).zip(et.chunks_mut(CHUNK)))
+            .zip(input.chunks(CHUNK).zip(preset.chunks(CHUNK)));
+        for ((bank, (q, et)), (input, preset)) in chunks {
+            for (t, &ms) in self.pt.iter_mut().zip(preset) {
+                *t = Time::from_millis(ms);
+            }
+            for (b, &byte) in self.input.iter_mut().zip(input) {
+                *b = byte != 0;
+            }
+            self.input[input.len()..].fill(false);
+            bank.scan(now, &self.input, &self.pt);
+            // Q and ET of the chunk just scanned, while its state is in cache.
+            bank.outputs_into(&mut self.q, &mut self.et);
+            for (slot, &v) in q.iter_mut().zip(self.q.iter()) {
+                *slot = u8::from(v);
+            }
+            for (slot, &v) in et.iter_mut().zip(self.et.iter()) {
+                // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
+                *slot = v as i32;
+            }
+        }
+    }
+
+    /// The state of lane `i` (`i` < the bank's lanes).
+    fn get(&self, i: usize) -> Option<IecState<u32>> {
+        self.banks.get(i / CHUNK)?.get(i % CHUNK).ok()
+    }
+}
+
 /// `n` TON timers called together once per scan, each exactly as `TON` called once per scan
 /// (IEC-BANK-01).
 ///
@@ -152,34 +305,22 @@ fn out_pair<'py>(out: Option<&Bound<'py, PyAny>>) -> PyResult<OutPair<'py>> {
 /// ...     q, et = bank.scan(500 * k, sensors, pt)
 /// >>> q.tolist(), et.tolist()
 /// ([True, False, True], [2000, 0, 500])
-#[pyclass(module = "plc_timers", name = "TonBank")]
+#[pyclass(module = "plc_timers", name = "TonBank", frozen)]
 pub struct PyTonBank {
-    banks: Vec<Box<TonBank<CHUNK>>>,
     n: usize,
-    last: Option<CpuTime>,
-    /// The PT of one chunk as `Time`s, reused for every chunk.
-    pt: Box<[Time; CHUNK]>,
-    /// The inputs of the last, padded chunk.
-    tail: Box<[bool; CHUNK]>,
-    /// One chunk's Q (for the last, shorter chunk) and ET (ms, before the cast to int32).
-    q: Box<[bool; CHUNK]>,
-    et: Box<[u32; CHUNK]>,
+    lanes: Mutex<TonLanes>,
 }
 
 #[pymethods]
 impl PyTonBank {
     /// A bank of `n` new timers.
     #[new]
-    fn new(n: usize) -> PyResult<Self> {
+    fn new(py: Python<'_>, n: &Bound<'_, PyAny>) -> PyResult<Self> {
+        numpy_or_import_error(py)?;
         let n = lanes(n)?;
         Ok(PyTonBank {
-            banks: (0..n.div_ceil(CHUNK)).map(|_| Box::default()).collect(),
             n,
-            last: None,
-            pt: Box::new([Time::from_millis(0); CHUNK]),
-            tail: Box::new([false; CHUNK]),
-            q: Box::new([false; CHUNK]),
-            et: Box::new([0; CHUNK]),
+            lanes: Mutex::new(TonLanes::new(n)),
         })
     }
 
@@ -188,11 +329,12 @@ impl PyTonBank {
     }
 
     /// One scan at CPU time `now_ms`: timer `i` called as TON with IN = `in_[i]` and PT =
-    /// `pt[i]` (ms). `in_` is a numpy array of bool, `pt` of int32, both of length `n`.
+    /// `pt[i]` (ms). `in_` is a numpy array of bool (its bytes read as numpy reads them:
+    /// non-zero is True; a uint8 array is taken too), `pt` of int32, both of length `n`.
     /// Returns `(q, et)`: arrays of bool and int32 (ms), new ones or those of `out=(q, et)`.
     #[pyo3(signature = (now_ms, in_, pt, *, out = None))]
     fn scan<'py>(
-        &mut self,
+        &self,
         py: Python<'py>,
         now_ms: &Bound<'py, PyAny>,
         in_: &Bound<'py, PyAny>,
@@ -200,12 +342,11 @@ impl PyTonBank {
         out: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<TonArrays<'py>> {
         let now = args::now_ms(now_ms)?;
-        forward(now, self.last)?;
         let n = self.n;
-        let input = array::<bool>(in_, "in_", "bool_", n)?;
+        let input = bool_bytes(in_, "in_", n)?;
         let preset = array::<i32>(pt, "pt", "int32", n)?;
         let (q_out, et_out) = out_pair(out)?;
-        let q = output::<bool>(py, q_out.as_ref(), "q", "bool_", n)?;
+        let (q, q_bytes) = bool_output(py, q_out.as_ref(), "q", n)?;
         let et = output::<i32>(py, et_out.as_ref(), "et", "int32", n)?;
         // `array` checked that both are contiguous.
         let (input, preset) = match (input.as_slice(), preset.as_slice()) {
@@ -214,7 +355,7 @@ impl PyTonBank {
         };
         // The outputs are borrowed before the scan, so that an array that cannot be written
         // (e.g. `in_` given again as an output) fails the call before any timer changes.
-        let mut q_rw = writable(&q, "q")?;
+        let mut q_rw = writable(&q_bytes, "q")?;
         let mut et_rw = writable(&et, "et")?;
         let (q_all, et_all) = match (q_rw.as_slice_mut(), et_rw.as_slice_mut()) {
             (Ok(q), Ok(et)) => (q, et),
@@ -224,55 +365,92 @@ impl PyTonBank {
                 ))
             }
         };
-        self.last = Some(now);
-        let chunks = self
-            .banks
-            .iter_mut()
-            .zip(q_all.chunks_mut(CHUNK).zip(et_all.chunks_mut(CHUNK)))
-            .zip(input.chunks(CHUNK).zip(preset.chunks(CHUNK)));
-        for ((bank, (q, et)), (input, preset)) in chunks {
-            for (t, &ms) in self.pt.iter_mut().zip(preset) {
-                *t = Time::from_millis(ms);
-            }
-            let inputs: &[bool; CHUNK] = match <&[bool; CHUNK]>::try_from(input) {
-                Ok(full) => full,
-                Err(_) => {
-                    self.tail[..input.len()].copy_from_slice(input);
-                    &self.tail
-                }
-            };
-            bank.scan(now, inputs, &self.pt);
-            // Q and ET of the chunk just scanned, while its state is in cache.
-            match <&mut [bool; CHUNK]>::try_from(&mut *q) {
-                Ok(full) => bank.outputs_into(full, &mut self.et),
-                Err(_) => {
-                    bank.outputs_into(&mut self.q, &mut self.et);
-                    q.copy_from_slice(&self.q[..q.len()]);
-                }
-            }
-            for (slot, &v) in et.iter_mut().zip(self.et.iter()) {
-                // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
-                *slot = v as i32;
-            }
-        }
+        // No Python call from here to the end of the scan: see `lock`.
+        let mut lanes = lock(&self.lanes);
+        forward(now, lanes.last)?;
+        lanes.last = Some(now);
+        lanes.scan(now, input, preset, q_all, et_all);
         Ok((q, et))
     }
 
     /// The outputs of timer `i` (Q, ET) after the last scan.
-    fn output(&self, i: usize) -> PyResult<crate::blocks::PyIecOutput> {
-        self.banks
-            .get(i / CHUNK)
-            .filter(|_| i < self.n)
-            // `i % CHUNK` is always a timer of the chunk: the bound that matters is `self.n`,
-            // whose message says what exists in this bank.
-            .and_then(|b| b.output(i % CHUNK).ok())
-            .map(Into::into)
-            .ok_or_else(|| {
-                pyo3::exceptions::PyIndexError::new_err(format!(
-                    "no timer {i}: this bank has 0 to {}",
-                    self.n - 1
-                ))
-            })
+    fn output(&self, i: &Bound<'_, PyAny>) -> PyResult<crate::blocks::PyIecOutput> {
+        let i = lane(i, self.n, "timer")?;
+        let state = lock(&self.lanes).get(i);
+        state
+            .map(|s| crate::blocks::PyIecOutput { q: s.q, et: s.et })
+            .ok_or_else(|| PyIndexError::new_err(format!("no timer {i}")))
+    }
+
+    /// A copy with the same timers and clock: `copy.copy(bank)` and `copy.deepcopy(bank)`
+    /// (a snapshot to go back to).
+    fn __copy__(&self) -> Self {
+        PyTonBank {
+            n: self.n,
+            lanes: Mutex::new(lock(&self.lanes).clone()),
+        }
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.__copy__()
+    }
+
+    /// For pickle: `TonBank(n)`, then the state of every timer (IN, running, START, PT, ET,
+    /// Q) and the time of the last scan.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyType>, (usize,), Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let this = slf.get();
+        let (last, states) = {
+            let lanes = lock(&this.lanes);
+            let states: Vec<IecState<u32>> = (0..this.n).filter_map(|i| lanes.get(i)).collect();
+            (lanes.last.map(CpuTime::as_millis), states)
+        };
+        let rows = PyList::empty(py);
+        for s in states {
+            rows.append((s.input, s.running, s.start, s.pt, s.et, s.q))?;
+        }
+        let state = PyTuple::new(py, [last.into_pyobject(py)?.into_any(), rows.into_any()])?;
+        Ok((slf.get_type(), (this.n,), state))
+    }
+
+    /// Restores what `__reduce__` saved; a state that no timer can be in is a `ValueError`.
+    fn __setstate__(&self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        type Row = (bool, bool, u32, u32, u32, bool);
+        let (last, rows): (Option<u64>, Vec<Row>) = state.extract().map_err(|_| {
+            PyValueError::new_err(
+                "a TonBank's state is (last_ms, [(in, running, start, pt, et, q), …])",
+            )
+        })?;
+        if rows.len() != self.n {
+            return Err(PyValueError::new_err(format!(
+                "the state has {} timers; this bank has {}",
+                rows.len(),
+                self.n
+            )));
+        }
+        let mut restored = TonLanes::new(self.n);
+        restored.last = last.map(CpuTime::from_millis);
+        for (i, (input, running, start, pt, et, q)) in rows.into_iter().enumerate() {
+            let state = IecState {
+                kind: None,
+                input,
+                running,
+                start,
+                pt,
+                et,
+                q,
+            };
+            let bank = &mut restored.banks[i / CHUNK];
+            if bank.set_state(i % CHUNK, state) != Ok(true) {
+                return Err(PyValueError::new_err(format!(
+                    "the state of timer {i} is not one a timer can be in: {state:?}"
+                )));
+            }
+        }
+        *lock(&self.lanes) = restored;
+        Ok(())
     }
 
     fn __repr__(&self) -> String {
@@ -285,22 +463,21 @@ impl PyTonBank {
 /// `bench.py` compares the numpy bank with. Not part of the API.
 #[pyfunction]
 fn _rust_ton_scan_seconds(
-    inputs: Vec<PyReadonlyArray1<'_, bool>>,
+    inputs: Vec<Bound<'_, PyAny>>,
     pt: PyReadonlyArray1<'_, i32>,
     scans: u64,
 ) -> PyResult<f64> {
     const N: usize = 10_048;
-    let to_array = |s: Result<&[bool], _>| -> PyResult<Box<[bool; N]>> {
-        s.ok()
-            .and_then(|s: &[bool]| Box::<[bool; N]>::try_from(s.to_vec().into_boxed_slice()).ok())
-            .ok_or_else(|| {
-                PyValueError::new_err(format!("inputs are contiguous arrays of {N} bools"))
-            })
+    let to_array = |a: &Bound<'_, PyAny>| -> PyResult<Box<[bool; N]>> {
+        let bytes = bool_bytes(a, "inputs[k]", N)?;
+        let bytes = bytes
+            .as_slice()
+            .map_err(|_| PyValueError::new_err("inputs are contiguous"))?;
+        let bools: Vec<bool> = bytes.iter().map(|&b| b != 0).collect();
+        Box::<[bool; N]>::try_from(bools.into_boxed_slice())
+            .map_err(|_| PyValueError::new_err(format!("inputs are arrays of {N} bools")))
     };
-    let scans_in: Vec<Box<[bool; N]>> = inputs
-        .iter()
-        .map(|a| to_array(a.as_slice()))
-        .collect::<PyResult<_>>()?;
+    let scans_in: Vec<Box<[bool; N]>> = inputs.iter().map(to_array).collect::<PyResult<_>>()?;
     if scans_in.is_empty() || scans == 0 {
         return Err(PyValueError::new_err(
             "give at least one input array and one scan",
@@ -331,28 +508,41 @@ fn _rust_ton_scan_seconds(
 
 /// A counter bank of any integer type, behind one object-safe interface.
 trait AnyBank: Send + Sync {
+    /// One scan with the inputs as bytes (non-zero = 1; `None`: 0) and preset `pv`.
     fn scan<'py>(
-        &mut self,
+        &self,
         py: Python<'py>,
-        inputs: [Option<&[bool]>; 4],
+        inputs: [Option<&[u8]>; 4],
         pv: i128,
         out: [Option<Bound<'py, PyAny>>; 3],
     ) -> PyResult<Bound<'py, PyTuple>>;
+    /// A copy of the bank with its counters' states.
+    fn copy(&self) -> Box<dyn AnyBank>;
+    /// Every counter's state: CV, CU's and CD's edge memories.
+    fn states(&self) -> Vec<(i128, bool, bool)>;
+    /// The counters put in `states`; `Err(i)` when counter `i`'s CV is outside the type.
+    fn set_states(&self, states: &[(i128, bool, bool)]) -> Result<(), usize>;
+}
+
+/// The counters of a bank of `n` lanes: its chunks and one chunk's inputs (CU, CD, R, LD).
+#[derive(Clone)]
+struct CounterLanes<T> {
+    banks: Vec<Box<CounterBank<T, CHUNK>>>,
+    buf: Box<[[bool; CHUNK]; 4]>,
 }
 
 struct Lanes<T> {
-    banks: Vec<Box<CounterBank<T, CHUNK>>>,
     n: usize,
-    /// The inputs of one chunk: CU, CD, R, LD.
-    buf: Box<[[bool; CHUNK]; 4]>,
     dtype: &'static str,
+    /// Locked as [`lock`] says.
+    lanes: Mutex<CounterLanes<T>>,
 }
 
 impl<T: CounterInt + Element> AnyBank for Lanes<T> {
     fn scan<'py>(
-        &mut self,
+        &self,
         py: Python<'py>,
-        inputs: [Option<&[bool]>; 4],
+        inputs: [Option<&[u8]>; 4],
         pv: i128,
         out: [Option<Bound<'py, PyAny>>; 3],
     ) -> PyResult<Bound<'py, PyTuple>> {
@@ -360,13 +550,13 @@ impl<T: CounterInt + Element> AnyBank for Lanes<T> {
         let pv = T::from_i128(pv)
             .ok_or_else(|| PyValueError::new_err(format!("pv {pv} is outside the type")))?;
         let [qu_out, qd_out, cv_out] = out;
-        let qu = output::<bool>(py, qu_out.as_ref(), "qu", "bool_", n)?;
-        let qd = output::<bool>(py, qd_out.as_ref(), "qd", "bool_", n)?;
+        let (qu, qu_bytes) = bool_output(py, qu_out.as_ref(), "qu", n)?;
+        let (qd, qd_bytes) = bool_output(py, qd_out.as_ref(), "qd", n)?;
         let cv = output::<T>(py, cv_out.as_ref(), "cv", self.dtype, n)?;
         // The outputs are borrowed before the scan, so that an array that cannot be written
         // fails the call before any counter changes.
-        let mut qu_rw = writable(&qu, "qu")?;
-        let mut qd_rw = writable(&qd, "qd")?;
+        let mut qu_rw = writable(&qu_bytes, "qu")?;
+        let mut qd_rw = writable(&qd_bytes, "qd")?;
         let mut cv_rw = writable(&cv, "cv")?;
         let (qu_all, qd_all, cv_all) = match (
             qu_rw.as_slice_mut(),
@@ -384,37 +574,96 @@ impl<T: CounterInt + Element> AnyBank for Lanes<T> {
             .chunks_mut(CHUNK)
             .zip(qd_all.chunks_mut(CHUNK))
             .zip(cv_all.chunks_mut(CHUNK));
-        for (k, (bank, ((qu, qd), cv))) in self.banks.iter_mut().zip(outs).enumerate() {
+        // No Python call from here to the end of the scan: see `lock`.
+        let mut guard = lock(&self.lanes);
+        let CounterLanes { banks, buf } = &mut *guard;
+        for (k, (bank, ((qu, qd), cv))) in banks.iter_mut().zip(outs).enumerate() {
             let lo = k * CHUNK;
             let hi = (lo + CHUNK).min(n);
-            for (buf, given) in self.buf.iter_mut().zip(&inputs) {
+            for (buf, given) in buf.iter_mut().zip(&inputs) {
                 match given {
-                    Some(s) => buf[..hi - lo].copy_from_slice(&s[lo..hi]),
+                    Some(s) => {
+                        for (b, &byte) in buf.iter_mut().zip(&s[lo..hi]) {
+                            *b = byte != 0;
+                        }
+                    }
                     None => buf[..hi - lo].fill(false),
                 }
             }
-            let [cu, cd, r, ld] = &*self.buf;
+            let [cu, cd, r, ld] = &**buf;
             bank.scan(&BankInputs { cu, cd, r, ld }, pv);
             let slots = qu.iter_mut().zip(qd.iter_mut()).zip(cv.iter_mut());
             for (((qu, qd), cv), o) in slots.zip(bank.outputs(pv)) {
-                *qu = o.qu;
-                *qd = o.qd;
+                *qu = u8::from(o.qu);
+                *qd = u8::from(o.qd);
                 *cv = o.cv;
             }
         }
+        drop(guard);
         drop((qu_rw, qd_rw, cv_rw));
         PyTuple::new(py, [qu.into_any(), qd.into_any(), cv.into_any()])
+    }
+
+    fn copy(&self) -> Box<dyn AnyBank> {
+        Box::new(Lanes {
+            n: self.n,
+            dtype: self.dtype,
+            lanes: Mutex::new(lock(&self.lanes).clone()),
+        })
+    }
+
+    fn states(&self) -> Vec<(i128, bool, bool)> {
+        let lanes = lock(&self.lanes);
+        (0..self.n)
+            .filter_map(|i| lanes.banks.get(i / CHUNK)?.get(i % CHUNK).ok())
+            .map(|s| (s.cv.to_i128(), s.cu_prev, s.cd_prev))
+            .collect()
+    }
+
+    fn set_states(&self, states: &[(i128, bool, bool)]) -> Result<(), usize> {
+        let mut restored = CounterLanes::<T>::new(self.n);
+        for (i, &(cv, cu_prev, cd_prev)) in states.iter().enumerate() {
+            let cv = T::from_i128(cv).ok_or(i)?;
+            let state = CounterState {
+                cv,
+                cu_prev,
+                cd_prev,
+            };
+            restored
+                .banks
+                .get_mut(i / CHUNK)
+                .and_then(|b| b.set_state(i % CHUNK, state).ok())
+                .ok_or(i)?;
+        }
+        *lock(&self.lanes) = restored;
+        Ok(())
+    }
+}
+
+impl<T: CounterInt> CounterLanes<T> {
+    fn new(n: usize) -> CounterLanes<T> {
+        CounterLanes {
+            banks: (0..n.div_ceil(CHUNK)).map(|_| Box::default()).collect(),
+            buf: Box::new([[false; CHUNK]; 4]),
+        }
     }
 }
 
 fn lanes_of<T: CounterInt + Element>(n: usize, dtype: &'static str) -> Box<dyn AnyBank> {
     Box::new(Lanes::<T> {
-        banks: (0..n.div_ceil(CHUNK)).map(|_| Box::default()).collect(),
         n,
-        buf: Box::new([[false; CHUNK]; 4]),
         dtype,
+        lanes: Mutex::new(CounterLanes::new(n)),
     })
 }
+
+/// The arguments `__reduce__` gives pickle for a `CounterBank`: the class, `(n, type)`, every
+/// counter's `(cv, cu_prev, cd_prev)`.
+type CounterBankReduce<'py> = (
+    Bound<'py, PyType>,
+    (usize, &'static str),
+    Vec<(i128, bool, bool)>,
+);
 
 /// The numpy dtype name of the integer type `t`.
 fn dtype_of(t: IntType) -> &'static str {
@@ -441,7 +690,7 @@ fn dtype_of(t: IntType) -> &'static str {
 /// ...     qu, qd, cv = lines.scan(cu=np.array([pulse, pulse, pulse, False]), r=reset, pv=3)
 /// >>> qu.tolist(), cv.tolist(), cv.dtype.name
 /// ([True, True, False, False], [3, 3, 0, 0], 'int16')
-#[pyclass(module = "plc_timers", name = "CounterBank")]
+#[pyclass(module = "plc_timers", name = "CounterBank", frozen)]
 pub struct PyCounterBank {
     bank: Box<dyn AnyBank>,
     n: usize,
@@ -453,7 +702,8 @@ impl PyCounterBank {
     /// A bank of `n` new counters of integer type `type` (SINT … ULINT, default INT).
     #[new]
     #[pyo3(signature = (n, r#type = "INT"))]
-    fn new(n: usize, r#type: &str) -> PyResult<Self> {
+    fn new(py: Python<'_>, n: &Bound<'_, PyAny>, r#type: &str) -> PyResult<Self> {
+        numpy_or_import_error(py)?;
         let n = lanes(n)?;
         let t = int_type(r#type)?;
         let bank = match t {
@@ -484,13 +734,14 @@ impl PyCounterBank {
     }
 
     /// One scan: counter `i` called as CTUD with CU = `cu[i]`, CD = `cd[i]`, R = `r[i]`, LD =
-    /// `ld[i]` (numpy arrays of bool of length `n`; an input not given is 0) and preset `pv`.
+    /// `ld[i]` (numpy arrays of bool of length `n`, their bytes read as numpy reads them:
+    /// non-zero is True; uint8 arrays are taken too; an input not given is 0) and preset `pv`.
     /// Returns `(qu, qd, cv)`: arrays of bool, bool and the type's dtype, new ones or those of
     /// `out=(qu, qd, cv)`.
     #[pyo3(signature = (*, pv, cu = None, cd = None, r = None, ld = None, out = None))]
     #[allow(clippy::too_many_arguments)]
     fn scan<'py>(
-        &mut self,
+        &self,
         py: Python<'py>,
         pv: &Bound<'py, PyAny>,
         cu: Option<&Bound<'py, PyAny>>,
@@ -502,7 +753,7 @@ impl PyCounterBank {
         let n = self.n;
         let pv = counter_pv(pv, self.int_type, "pv")?;
         let read = |a: Option<&Bound<'py, PyAny>>, what: &str| {
-            a.map(|a| array::<bool>(a, what, "bool_", n)).transpose()
+            a.map(|a| bool_bytes(a, what, n)).transpose()
         };
         let arrays = [
             read(cu, "cu")?,
@@ -510,7 +761,7 @@ impl PyCounterBank {
             read(r, "r")?,
             read(ld, "ld")?,
         ];
-        let mut slices: [Option<&[bool]>; 4] = [None; 4];
+        let mut slices: [Option<&[u8]>; 4] = [None; 4];
         for (s, a) in slices.iter_mut().zip(&arrays) {
             if let Some(a) = a {
                 *s = Some(
@@ -540,6 +791,63 @@ impl PyCounterBank {
         self.bank.scan(py, slices, pv, out)
     }
 
+    /// The state of counter `i`: `(cv, cu_prev, cd_prev)`, its CV and the edge memories of
+    /// CU and CD.
+    fn state(&self, i: &Bound<'_, PyAny>) -> PyResult<(i128, bool, bool)> {
+        let i = lane(i, self.n, "counter")?;
+        self.bank
+            .states()
+            .get(i)
+            .copied()
+            .ok_or_else(|| PyIndexError::new_err(format!("no counter {i}")))
+    }
+
+    /// A copy with the same counters: `copy.copy(bank)` and `copy.deepcopy(bank)` (a
+    /// snapshot to go back to).
+    fn __copy__(&self) -> Self {
+        PyCounterBank {
+            bank: self.bank.copy(),
+            n: self.n,
+            int_type: self.int_type,
+        }
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.__copy__()
+    }
+
+    /// For pickle: `CounterBank(n, type)`, then every counter's `(cv, cu_prev, cd_prev)`.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<CounterBankReduce<'py>> {
+        let this = slf.get();
+        Ok((
+            slf.get_type(),
+            (this.n, this.int_type.name()),
+            this.bank.states(),
+        ))
+    }
+
+    /// Restores what `__reduce__` saved; a CV outside the type is a `ValueError`.
+    fn __setstate__(&self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let states: Vec<(i128, bool, bool)> = state.extract().map_err(|_| {
+            PyValueError::new_err("a CounterBank's state is [(cv, cu_prev, cd_prev), …]")
+        })?;
+        if states.len() != self.n {
+            return Err(PyValueError::new_err(format!(
+                "the state has {} counters; this bank has {}",
+                states.len(),
+                self.n
+            )));
+        }
+        self.bank.set_states(&states).map_err(|i| {
+            let (lo, hi) = self.int_type.limits();
+            PyValueError::new_err(format!(
+                "the CV of counter {i}, {}, is outside {}, {lo}..={hi}",
+                states[i].0,
+                self.int_type.name()
+            ))
+        })
+    }
+
     fn __repr__(&self) -> String {
         format!("CounterBank({}, type={:?})", self.n, self.int_type.name())
     }
@@ -549,6 +857,10 @@ impl PyCounterBank {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyTonBank>()?;
     m.add_class::<PyCounterBank>()?;
-    m.add_function(wrap_pyfunction!(_rust_ton_scan_seconds, m)?)?;
+    // An attribute, not `add_function`: that would list it in `__all__`, the public names.
+    m.setattr(
+        "_rust_ton_scan_seconds",
+        wrap_pyfunction!(_rust_ton_scan_seconds, m)?,
+    )?;
     Ok(())
 }

@@ -7,17 +7,19 @@ use std::marker::PhantomData;
 use plc_timers::catalog::{Block, Kind, Port};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
-    S5CounterRef,
+    S5CounterRef, S5CounterState,
 };
 use plc_timers::counter::{
     Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
+    CounterState,
 };
-use plc_timers::iec::{IecInput, IecKind, IecOutput, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{S5Input, S5Kind, S5Output, S5Timer, S5TimerOps, S5TimerRef};
-use plc_timers::time::{CpuTime, S5Time, Time};
+use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
+use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
 use plc_timers_cli::trace::IntType;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyType;
 
 use crate::args::{self, forward, now_ms};
 
@@ -49,6 +51,19 @@ impl From<S5Output> for PyS5Output {
 
 #[pymethods]
 impl PyS5Output {
+    /// The outputs Q, BI (0..=999) and BCD (a word) as given, e.g. to compare a call's result with: `out ==
+    /// S5Output(q, bi, bcd)`.
+    #[new]
+    #[pyo3(signature = (q, bi, bcd))]
+    fn new(q: bool, bi: u16, bcd: u16) -> Self {
+        PyS5Output { q, bi, bcd }
+    }
+
+    /// For pickle and `copy`: the arguments of the constructor.
+    fn __getnewargs__(&self) -> (bool, u16, u16) {
+        (self.q, self.bi, self.bcd)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "S5Output(q={}, bi={}, bcd=0x{:04X})",
@@ -77,6 +92,19 @@ impl From<IecOutput<u32>> for PyIecOutput {
 
 #[pymethods]
 impl PyIecOutput {
+    /// The outputs Q and ET (ms) as given, e.g. to compare a call's result with: `out ==
+    /// IecOutput(q, et)`.
+    #[new]
+    #[pyo3(signature = (q, et))]
+    fn new(q: bool, et: u32) -> Self {
+        PyIecOutput { q, et }
+    }
+
+    /// For pickle and `copy`: the arguments of the constructor.
+    fn __getnewargs__(&self) -> (bool, u32) {
+        (self.q, self.et)
+    }
+
     fn __repr__(&self) -> String {
         format!("IecOutput(q={}, et={})", py_bool(self.q), self.et)
     }
@@ -104,6 +132,19 @@ pub struct PyCounterOutput {
 
 #[pymethods]
 impl PyCounterOutput {
+    /// The outputs QU, QD and CV as given, e.g. to compare a call's result with: `out ==
+    /// CounterOutput(qu, qd, cv)`.
+    #[new]
+    #[pyo3(signature = (qu, qd, cv))]
+    fn new(qu: bool, qd: bool, cv: i128) -> Self {
+        PyCounterOutput { qu, qd, cv }
+    }
+
+    /// For pickle and `copy`: the arguments of the constructor.
+    fn __getnewargs__(&self) -> (bool, bool, i128) {
+        (self.qu, self.qd, self.cv)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "CounterOutput(qu={}, qd={}, cv={})",
@@ -145,6 +186,19 @@ impl From<S5CounterOutput> for PyS5CounterOutput {
 
 #[pymethods]
 impl PyS5CounterOutput {
+    /// The outputs Q, CV and CV_BCD as given, e.g. to compare a call's result with: `out ==
+    /// S5CounterOutput(q, cv, cv_bcd)`.
+    #[new]
+    #[pyo3(signature = (q, cv, cv_bcd))]
+    fn new(q: bool, cv: u16, cv_bcd: u16) -> Self {
+        PyS5CounterOutput { q, cv, cv_bcd }
+    }
+
+    /// For pickle and `copy`: the arguments of the constructor.
+    fn __getnewargs__(&self) -> (bool, u16, u16) {
+        (self.q, self.cv, self.cv_bcd)
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "S5CounterOutput(q={}, cv={}, cv_bcd=0x{:04X})",
@@ -162,6 +216,13 @@ pub fn py_bool(b: bool) -> &'static str {
     } else {
         "False"
     }
+}
+
+/// The error for a pickled state that no block of this kind can be in.
+fn bad_state(block: Block) -> PyErr {
+    PyValueError::new_err(format!(
+        "not a state of {block}: restore only what pickle saved from a {block}"
+    ))
 }
 
 /// Rejects a true input that `block` does not have (e.g. CD of CTU): the core would take it as
@@ -198,14 +259,58 @@ fn preset<T: Copy>(
 // ---------------------------------------------------------------------------------------------
 // S5 timers
 
+/// An S5 timer of either implementation, copyable behind the interface.
+trait S5Dyn: S5TimerOps + Send + Sync {
+    fn clone_box(&self) -> Box<dyn S5Dyn>;
+    /// The time of the previous execution (the ticks of the next call count from it).
+    fn last_call(&self) -> CpuTime;
+}
+
+impl S5Dyn for S5TimerRef {
+    fn clone_box(&self) -> Box<dyn S5Dyn> {
+        Box::new(*self)
+    }
+    fn last_call(&self) -> CpuTime {
+        S5TimerRef::last_call(self)
+    }
+}
+
+impl S5Dyn for S5Timer {
+    fn clone_box(&self) -> Box<dyn S5Dyn> {
+        Box::new(*self)
+    }
+    fn last_call(&self) -> CpuTime {
+        S5Timer::last_call(self)
+    }
+}
+
+/// The state pickle saves for an S5 timer: optimized, TV (word), the last `now_ms`, the last
+/// call of the core, then the [`S5State`]'s fields (the base in ms).
+type S5TimerPickle = (
+    bool,
+    Option<u16>,
+    Option<u64>,
+    u64,
+    (bool, u16, u32, bool, bool, bool, bool),
+);
+
 /// An S5 timer of one kind, reference or optimized.
 pub struct S5Block {
     block: Block,
     kind: S5Kind,
-    timer: Box<dyn S5TimerOps + Send + Sync>,
+    timer: Box<dyn S5Dyn>,
     optimized: bool,
     tv: Option<S5Time>,
     last: Option<CpuTime>,
+}
+
+impl Clone for S5Block {
+    fn clone(&self) -> Self {
+        S5Block {
+            timer: self.timer.clone_box(),
+            ..*self
+        }
+    }
 }
 
 impl S5Block {
@@ -214,7 +319,7 @@ impl S5Block {
             return Err(PyValueError::new_err(format!("{block} is not an S5 timer")));
         };
         let tv = tv.map(|t| args::s5time(t, "tv")).transpose()?;
-        let timer: Box<dyn S5TimerOps + Send + Sync> = if optimized {
+        let timer: Box<dyn S5Dyn> = if optimized {
             Box::new(S5Timer::new())
         } else {
             Box::new(S5TimerRef::new())
@@ -243,6 +348,61 @@ impl S5Block {
         self.last = Some(now);
         let input = S5Input::new(s, r, tv).with_fr(fr);
         Ok(self.timer.call(self.kind, now, input).into())
+    }
+
+    fn getstate(&self) -> S5TimerPickle {
+        let st = self.timer.state();
+        (
+            self.optimized,
+            self.tv.map(S5Time::to_word),
+            self.last.map(CpuTime::as_millis),
+            self.timer.last_call().as_millis(),
+            (
+                st.running,
+                st.value,
+                st.base.millis(),
+                st.q,
+                st.q_on_expiry,
+                st.s_prev,
+                st.fr_prev,
+            ),
+        )
+    }
+
+    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let (optimized, tv, last, last_call, fields): S5TimerPickle =
+            state.extract().map_err(|_| bad_state(self.block))?;
+        let (running, value, base_ms, q, q_on_expiry, s_prev, fr_prev) = fields;
+        let base = TimeBase::ALL
+            .into_iter()
+            .find(|b| b.millis() == base_ms)
+            .ok_or_else(|| bad_state(self.block))?;
+        let st = S5State {
+            running,
+            value,
+            base,
+            q,
+            q_on_expiry,
+            s_prev,
+            fr_prev,
+        };
+        let last_call = CpuTime::from_millis(last_call);
+        let timer: Box<dyn S5Dyn> = if optimized {
+            Box::new(S5Timer::from_state(st, last_call).ok_or_else(|| bad_state(self.block))?)
+        } else {
+            Box::new(S5TimerRef::from_state(st, last_call).ok_or_else(|| bad_state(self.block))?)
+        };
+        let tv = tv
+            .map(|w| S5Time::from_word(w).map_err(|_| bad_state(self.block)))
+            .transpose()?;
+        *self = S5Block {
+            timer,
+            optimized,
+            tv,
+            last: last.map(CpuTime::from_millis),
+            ..*self
+        };
+        Ok(())
     }
 
     fn repr(&self) -> String {
@@ -295,6 +455,31 @@ macro_rules! s5_timers {
                 self.0.optimized
             }
 
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                $cls(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                $cls(self.0.clone())
+            }
+
+            /// For pickle: the class with its defaults, then the state (preset,
+            /// implementation, the core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
+                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
+                Ok((slf.get_type(), (), state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
+            }
+
             fn __repr__(&self) -> String {
                 self.0.repr()
             }
@@ -320,14 +505,43 @@ s5_timers! {
 // ---------------------------------------------------------------------------------------------
 // IEC timers
 
+/// An IEC timer of either implementation, copyable behind the interface.
+trait IecDyn: IecTimerOps<u32> + Send + Sync {
+    fn clone_box(&self) -> Box<dyn IecDyn>;
+}
+
+impl<X: IecTimerOps<u32> + Copy + Send + Sync + 'static> IecDyn for X {
+    fn clone_box(&self) -> Box<dyn IecDyn> {
+        Box::new(*self)
+    }
+}
+
+/// The state pickle saves for an IEC timer: optimized, PT (ms), the last `now_ms`, then the
+/// [`IecState`]'s fields (the kind by name).
+type IecTimerPickle = (
+    bool,
+    Option<i32>,
+    Option<u64>,
+    (Option<String>, bool, bool, u32, u32, u32, bool),
+);
+
 /// An IEC timer of one kind, reference or optimized.
 pub struct IecBlock {
     block: Block,
     kind: IecKind,
-    timer: Box<dyn IecTimerOps<u32> + Send + Sync>,
+    timer: Box<dyn IecDyn>,
     optimized: bool,
     pt: Option<Time>,
     last: Option<CpuTime>,
+}
+
+impl Clone for IecBlock {
+    fn clone(&self) -> Self {
+        IecBlock {
+            timer: self.timer.clone_box(),
+            ..*self
+        }
+    }
 }
 
 impl IecBlock {
@@ -338,7 +552,7 @@ impl IecBlock {
             )));
         };
         let pt = pt.map(|t| args::time(t, "pt")).transpose()?;
-        let timer: Box<dyn IecTimerOps<u32> + Send + Sync> = if optimized {
+        let timer: Box<dyn IecDyn> = if optimized {
             Box::new(IecTimer::new())
         } else {
             Box::new(IecTimerRef::<u32>::new())
@@ -372,6 +586,61 @@ impl IecBlock {
         let now = self.at(now)?;
         let input = IecInput::new(input, pt).with_reset(r);
         Ok(self.timer.call(self.kind, now, input).into())
+    }
+
+    fn getstate(&self) -> IecTimerPickle {
+        let st = self.timer.state();
+        (
+            self.optimized,
+            self.pt.map(Time::as_millis),
+            self.last.map(CpuTime::as_millis),
+            (
+                st.kind.map(|k| k.name().to_string()),
+                st.input,
+                st.running,
+                st.start,
+                st.pt,
+                st.et,
+                st.q,
+            ),
+        )
+    }
+
+    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let bad = || bad_state(self.block);
+        let (optimized, pt, last, fields): IecTimerPickle = state.extract().map_err(|_| bad())?;
+        let (kind, input, running, start, st_pt, et, q) = fields;
+        let kind = match kind {
+            None => None,
+            Some(name) => Some(
+                IecKind::ALL
+                    .into_iter()
+                    .find(|k| k.name() == name)
+                    .ok_or_else(bad)?,
+            ),
+        };
+        let st = IecState {
+            kind,
+            input,
+            running,
+            start,
+            pt: st_pt,
+            et,
+            q,
+        };
+        let timer: Box<dyn IecDyn> = if optimized {
+            Box::new(IecTimer::from_state(st).ok_or_else(bad)?)
+        } else {
+            Box::new(IecTimerRef::<u32>::from_state(st).ok_or_else(bad)?)
+        };
+        *self = IecBlock {
+            timer,
+            optimized,
+            pt: pt.map(Time::from_millis),
+            last: last.map(CpuTime::from_millis),
+            ..*self
+        };
+        Ok(())
     }
 
     fn repr(&self) -> String {
@@ -453,6 +722,31 @@ macro_rules! iec_timers {
                 self.0.optimized
             }
 
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                $cls(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                $cls(self.0.clone())
+            }
+
+            /// For pickle: the class with its defaults, then the state (preset,
+            /// implementation, the core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
+                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
+                Ok((slf.get_type(), (), state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
+            }
+
             fn __repr__(&self) -> String {
                 self.0.repr()
             }
@@ -483,6 +777,11 @@ iec_timers! {
 /// An IEC counter of any integer type, behind one object-safe interface: PV and CV as `i128`
 /// (every type's values fit).
 trait AnyCounter: Send + Sync {
+    fn clone_box(&self) -> Box<dyn AnyCounter>;
+    /// CV, CU's and CD's edge memories.
+    fn state(&self) -> (i128, bool, bool);
+    /// This counter put in a state (`None`: CV outside the type).
+    fn with_state(&self, cv: i128, cu_prev: bool, cd_prev: bool) -> Option<Box<dyn AnyCounter>>;
     fn call(
         &mut self,
         kind: CounterKind,
@@ -497,7 +796,45 @@ trait AnyCounter: Send + Sync {
 /// A counter `X` of integer type `T`.
 struct Typed<X, T>(X, PhantomData<T>);
 
-impl<T: CounterInt, X: CounterOps<T> + Send + Sync> AnyCounter for Typed<X, T> {
+/// The two implementations' constructor from a state (every counter state is valid).
+trait FromCounterState<T>: Sized {
+    fn from_counter_state(state: CounterState<T>) -> Self;
+}
+
+impl<T: CounterInt> FromCounterState<T> for Counter<T> {
+    fn from_counter_state(state: CounterState<T>) -> Self {
+        Counter::from_state(state)
+    }
+}
+
+impl<T: CounterInt> FromCounterState<T> for CounterRef<T> {
+    fn from_counter_state(state: CounterState<T>) -> Self {
+        CounterRef::from_state(state)
+    }
+}
+
+impl<T: CounterInt, X> AnyCounter for Typed<X, T>
+where
+    X: CounterOps<T> + FromCounterState<T> + Copy + Send + Sync + 'static,
+{
+    fn clone_box(&self) -> Box<dyn AnyCounter> {
+        Box::new(Typed(self.0, PhantomData))
+    }
+
+    fn state(&self) -> (i128, bool, bool) {
+        let s = self.0.state();
+        (s.cv.to_i128(), s.cu_prev, s.cd_prev)
+    }
+
+    fn with_state(&self, cv: i128, cu_prev: bool, cd_prev: bool) -> Option<Box<dyn AnyCounter>> {
+        let state = CounterState {
+            cv: T::from_i128(cv)?,
+            cu_prev,
+            cd_prev,
+        };
+        Some(Box::new(Typed(X::from_counter_state(state), PhantomData)))
+    }
+
     fn call(
         &mut self,
         kind: CounterKind,
@@ -562,6 +899,10 @@ pub fn counter_pv(obj: &Bound<'_, PyAny>, t: IntType, what: &str) -> PyResult<i1
     Ok(v)
 }
 
+/// The state pickle saves for an IEC counter: optimized, the integer type, PV, then CV and
+/// the edge memories of CU and CD.
+type CounterPickle = (bool, String, Option<i128>, (i128, bool, bool));
+
 /// An IEC counter of one kind and integer type, reference or optimized.
 pub struct CounterBlock {
     block: Block,
@@ -572,7 +913,47 @@ pub struct CounterBlock {
     pv: Option<i128>,
 }
 
+impl Clone for CounterBlock {
+    fn clone(&self) -> Self {
+        CounterBlock {
+            counter: self.counter.clone_box(),
+            ..*self
+        }
+    }
+}
+
 impl CounterBlock {
+    fn getstate(&self) -> CounterPickle {
+        (
+            self.optimized,
+            self.int_type.name().to_string(),
+            self.pv,
+            self.counter.state(),
+        )
+    }
+
+    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let bad = || bad_state(self.block);
+        let (optimized, type_name, pv, (cv, cu_prev, cd_prev)): CounterPickle =
+            state.extract().map_err(|_| bad())?;
+        let t = IntType::lookup(&type_name).ok_or_else(bad)?;
+        let (lo, hi) = t.limits();
+        if pv.is_some_and(|v| v < lo || v > hi) {
+            return Err(bad());
+        }
+        let counter = any_counter(t, optimized)
+            .with_state(cv, cu_prev, cd_prev)
+            .ok_or_else(bad)?;
+        *self = CounterBlock {
+            int_type: t,
+            counter,
+            optimized,
+            pv,
+            ..*self
+        };
+        Ok(())
+    }
+
     fn new(
         block: Block,
         pv: Option<&Bound<'_, PyAny>>,
@@ -670,6 +1051,31 @@ macro_rules! iec_counters {
                 self.0.optimized
             }
 
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                $cls(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                $cls(self.0.clone())
+            }
+
+            /// For pickle: the class with its defaults, then the state (preset,
+            /// implementation, the core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
+                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
+                Ok((slf.get_type(), (), state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
+            }
+
             fn __repr__(&self) -> String {
                 self.0.repr()
             }
@@ -693,16 +1099,77 @@ iec_counters! {
 // ---------------------------------------------------------------------------------------------
 // S5 counters
 
+/// An S5 counter of either implementation, copyable behind the interface.
+trait S5CounterDyn: S5CounterOps + Send + Sync {
+    fn clone_box(&self) -> Box<dyn S5CounterDyn>;
+}
+
+impl<X: S5CounterOps + Copy + Send + Sync + 'static> S5CounterDyn for X {
+    fn clone_box(&self) -> Box<dyn S5CounterDyn> {
+        Box::new(*self)
+    }
+}
+
+/// The state pickle saves for an S5 counter: optimized, PV, then the [`S5CounterState`]'s
+/// fields.
+type S5CounterPickle = (bool, Option<u16>, (u16, bool, bool, bool, bool));
+
 /// An S5 counter of one kind, reference or optimized.
 pub struct S5CounterBlock {
     block: Block,
     kind: S5CounterKind,
-    counter: Box<dyn S5CounterOps + Send + Sync>,
+    counter: Box<dyn S5CounterDyn>,
     optimized: bool,
     pv: Option<CounterPreset>,
 }
 
+impl Clone for S5CounterBlock {
+    fn clone(&self) -> Self {
+        S5CounterBlock {
+            counter: self.counter.clone_box(),
+            ..*self
+        }
+    }
+}
+
 impl S5CounterBlock {
+    fn getstate(&self) -> S5CounterPickle {
+        let st = self.counter.state();
+        (
+            self.optimized,
+            self.pv.map(CounterPreset::value),
+            (st.cv, st.cu_prev, st.cd_prev, st.s_prev, st.fr_prev),
+        )
+    }
+
+    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let bad = || bad_state(self.block);
+        let (optimized, pv, (cv, cu_prev, cd_prev, s_prev, fr_prev)): S5CounterPickle =
+            state.extract().map_err(|_| bad())?;
+        let st = S5CounterState {
+            cv,
+            cu_prev,
+            cd_prev,
+            s_prev,
+            fr_prev,
+        };
+        let counter: Box<dyn S5CounterDyn> = if optimized {
+            Box::new(S5Counter::from_state(st).ok_or_else(bad)?)
+        } else {
+            Box::new(S5CounterRef::from_state(st).ok_or_else(bad)?)
+        };
+        let pv = pv
+            .map(|v| CounterPreset::new(v).map_err(|_| bad()))
+            .transpose()?;
+        *self = S5CounterBlock {
+            counter,
+            optimized,
+            pv,
+            ..*self
+        };
+        Ok(())
+    }
+
     fn new(
         block: Block,
         pv: Option<&Bound<'_, PyAny>>,
@@ -714,7 +1181,7 @@ impl S5CounterBlock {
             )));
         };
         let pv = pv.map(|p| args::counter_preset(p, "pv")).transpose()?;
-        let counter: Box<dyn S5CounterOps + Send + Sync> = if optimized {
+        let counter: Box<dyn S5CounterDyn> = if optimized {
             Box::new(S5Counter::new())
         } else {
             Box::new(S5CounterRef::new())
@@ -807,6 +1274,31 @@ macro_rules! s5_counters {
             #[getter]
             fn optimized(&self) -> bool {
                 self.0.optimized
+            }
+
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                $cls(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                $cls(self.0.clone())
+            }
+
+            /// For pickle: the class with its defaults, then the state (preset,
+            /// implementation, the core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
+                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
+                Ok((slf.get_type(), (), state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
             }
 
             fn __repr__(&self) -> String {

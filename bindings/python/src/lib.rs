@@ -14,6 +14,7 @@
 //! what was wrong and what is allowed ([`args`]).
 
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyInt, PyString, PyTuple};
 
 pub mod args;
 pub mod banks;
@@ -65,5 +66,43 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     memory::register(m)?;
     trace::register(m)?;
     banks::register(m)?;
+    aliases(m)?;
+    Ok(())
+}
+
+/// The type aliases of the stubs (`TimeLike`, `Row`, …), defined at runtime too, so that a test
+/// can import what it annotates with (`from plc_timers import TimeLike`).
+fn aliases<'py>(m: &Bound<'py, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    let typing = py.import("typing")?;
+    let union = typing.getattr("Union")?;
+    let of = |items: Vec<Bound<'py, PyAny>>| union.get_item(PyTuple::new(py, items)?);
+    let (s5time, time, preset) = (
+        m.getattr("S5Time")?,
+        m.getattr("Time")?,
+        m.getattr("CounterPreset")?,
+    );
+    let (int, str_, bool_) = (
+        py.get_type::<PyInt>().into_any(),
+        py.get_type::<PyString>().into_any(),
+        py.get_type::<PyBool>().into_any(),
+    );
+    let cell = of(vec![
+        bool_,
+        int.clone(),
+        str_.clone(),
+        s5time.clone(),
+        time.clone(),
+        preset.clone(),
+    ])?;
+    let mapping = typing
+        .getattr("Mapping")?
+        .get_item((str_.clone(), cell.clone()))?;
+    let sequence = typing.getattr("Sequence")?.get_item(cell.clone())?;
+    m.add("Cell", &cell)?;
+    m.add("Row", of(vec![mapping, sequence])?)?;
+    m.add("S5TimeLike", of(vec![str_.clone(), int.clone(), s5time])?)?;
+    m.add("TimeLike", of(vec![str_.clone(), int.clone(), time])?)?;
+    m.add("CounterPresetLike", of(vec![str_, int, preset])?)?;
     Ok(())
 }

@@ -55,6 +55,14 @@ impl PyS5Time {
             .map_err(|e| PyValueError::new_err(e.to_string()))
     }
 
+    /// For pickle and `copy`: `S5Time.from_word(word)`.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (u16,))> {
+        Ok((
+            slf.get_type().getattr("from_word")?,
+            (slf.get().0.to_word(),),
+        ))
+    }
+
     /// The word (base in bits 13-12, three BCD digits).
     #[getter]
     fn word(&self) -> u16 {
@@ -125,6 +133,14 @@ impl PyTime {
         .map(|ms| PyTime(Time::from_millis(ms)))
     }
 
+    /// For pickle and `copy`: `Time.from_millis(millis)`.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (i32,))> {
+        Ok((
+            slf.get_type().getattr("from_millis")?,
+            (slf.get().0.as_millis(),),
+        ))
+    }
+
     /// The duration in milliseconds.
     #[getter]
     fn millis(&self) -> i32 {
@@ -158,6 +174,11 @@ pub struct PyCounterPreset(pub CounterPreset);
 #[pymethods]
 impl PyCounterPreset {
     /// The preset `value`, 0..=999.
+    /// For pickle and `copy`: the argument of the constructor.
+    fn __getnewargs__(&self) -> (u16,) {
+        (self.0.value(),)
+    }
+
     #[new]
     fn new(py: Python<'_>, value: &Bound<'_, PyAny>) -> PyResult<PyCounterPreset> {
         let n = int_in::<u16>(value, "value", "a counter preset, 0..=999")?;

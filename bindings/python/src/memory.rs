@@ -2,12 +2,13 @@
 //! The core's areas are const-generic; an area here has one of the sizes S7-300/400 CPUs had.
 
 use plc_timers::catalog::{Family, Kind, Port};
-use plc_timers::counter::s5::{CounterMemory, S5CounterInput, S5CounterKind};
-use plc_timers::s5::{S5Input, S5Kind, TimerMemory};
+use plc_timers::counter::s5::{CounterMemory, S5Counter, S5CounterInput, S5CounterKind};
+use plc_timers::s5::{S5Input, S5Kind, TimerMemory, TimerWord};
 use plc_timers::time::{CpuTime, TimeBase};
 use plc_timers::NoSuchOperand;
 use pyo3::exceptions::{PyIndexError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyType;
 
 use crate::args::{self, block_of, forward};
 use crate::blocks::{PyS5CounterOutput, PyS5Output};
@@ -24,7 +25,16 @@ fn no_such(e: NoSuchOperand) -> PyErr {
     PyIndexError::new_err(e.to_string())
 }
 
-fn size_error(count: usize) -> PyErr {
+/// An area size (a negative one is a `ValueError` saying what is allowed, not pyo3's
+/// `OverflowError`).
+fn area_size(count: i128) -> PyResult<usize> {
+    usize::try_from(count)
+        .ok()
+        .filter(|c| SIZES.contains(c))
+        .ok_or_else(|| size_error(count))
+}
+
+fn size_error(count: i128) -> PyErr {
     let sizes: Vec<String> = SIZES.iter().map(usize::to_string).collect();
     PyValueError::new_err(format!(
         "count {count} is not an area size; an area has {} operands",
@@ -35,6 +45,7 @@ fn size_error(count: usize) -> PyErr {
 macro_rules! sized {
     ($area:ident, $ty:ident) => {
         /// An area of one of [`SIZES`].
+        #[derive(Clone)]
         enum $area {
             N64(Box<$ty<64>>),
             N128(Box<$ty<128>>),
@@ -45,7 +56,8 @@ macro_rules! sized {
         }
 
         impl $area {
-            fn new(count: usize) -> PyResult<$area> {
+            fn new(count: i128) -> PyResult<$area> {
+                let count = area_size(count)?;
                 Ok(match count {
                     64 => $area::N64(Box::default()),
                     128 => $area::N128(Box::default()),
@@ -53,7 +65,7 @@ macro_rules! sized {
                     512 => $area::N512(Box::default()),
                     1024 => $area::N1024(Box::default()),
                     2048 => $area::N2048(Box::default()),
-                    _ => return Err(size_error(count)),
+                    _ => return Err(size_error(count as i128)),
                 })
             }
         }
@@ -72,6 +84,23 @@ macro_rules! with {
             $area::N2048($m) => $body,
         }
     };
+}
+
+/// The arguments `__reduce__` gives pickle for a `TimerMemory`.
+type TimerMemoryReduce<'py> = (Bound<'py, PyType>, (usize,), (u64, Option<u64>, Vec<u32>));
+
+/// The arguments `__reduce__` gives pickle for a `CounterMemory`.
+type CounterMemoryReduce<'py> = (Bound<'py, PyType>, (usize,), (Vec<u16>,));
+
+/// An area of `N` timers holding `words` (`N` of them), ticked up to `now`.
+fn timer_area<const N: usize>(words: &[TimerWord], now: CpuTime) -> PyResult<Box<TimerMemory<N>>> {
+    let words: [TimerWord; N] = words.try_into().map_err(|_| {
+        PyValueError::new_err(format!(
+            "an area of {N} timers needs {N} words; got {}",
+            words.len()
+        ))
+    })?;
+    Ok(Box::new(TimerMemory::from_words(words, now)))
 }
 
 sized!(TimerArea, TimerMemory);
@@ -108,6 +137,7 @@ fn time_base(ms: &Bound<'_, PyAny>) -> PyResult<TimeBase> {
 /// >>> area.advance_to(200); area.status(3)
 /// True
 #[pyclass(module = "plc_timers", name = "TimerMemory")]
+#[derive(Clone)]
 pub struct PyTimerMemory {
     area: TimerArea,
     count: usize,
@@ -119,12 +149,65 @@ impl PyTimerMemory {
     /// An area of `count` cleared timers: 64, 128, 256, 512, 1024 or 2048.
     #[new]
     #[pyo3(signature = (count = 256))]
-    fn new(count: usize) -> PyResult<Self> {
+    fn new(count: i128) -> PyResult<Self> {
+        let area = TimerArea::new(count)?;
         Ok(PyTimerMemory {
-            area: TimerArea::new(count)?,
-            count,
+            count: with!(TimerArea, &area, m => m.words().len()),
+            area,
             last: None,
         })
+    }
+
+    /// A copy with the same timers and clock: `copy.copy(area)` and `copy.deepcopy(area)` (a
+    /// snapshot to go back to).
+    fn __copy__(&self) -> Self {
+        self.clone()
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.clone()
+    }
+
+    /// For pickle: `TimerMemory(count)`, then the time the ticks reached, the last
+    /// `advance_to` time and every timer word's 32 bits (`T 0` first).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<TimerMemoryReduce<'py>> {
+        let this = slf.borrow();
+        let now = with!(TimerArea, &this.area, m => m.now().as_millis());
+        let words: Vec<u32> =
+            with!(TimerArea, &this.area, m => m.words().map(TimerWord::bits).collect());
+        let last = this.last.map(CpuTime::as_millis);
+        Ok((slf.get_type(), (this.count,), (now, last, words)))
+    }
+
+    /// Restores what `__reduce__` saved; a word no timer can hold is a `ValueError`.
+    fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let (now, last, bits): (u64, Option<u64>, Vec<u32>) = state.extract().map_err(|_| {
+            PyValueError::new_err("a TimerMemory's state is (now_ms, last_ms, [word, …])")
+        })?;
+        if bits.len() != self.count {
+            return Err(PyValueError::new_err(format!(
+                "the state has {} timers; this area has {}",
+                bits.len(),
+                self.count
+            )));
+        }
+        let mut words = Vec::with_capacity(bits.len());
+        for (i, &b) in bits.iter().enumerate() {
+            words.push(TimerWord::from_bits(b).ok_or_else(|| {
+                PyValueError::new_err(format!("T {i}: 0x{b:08X} is not a timer word"))
+            })?);
+        }
+        let now = CpuTime::from_millis(now);
+        self.area = match &self.area {
+            TimerArea::N64(_) => TimerArea::N64(timer_area(&words, now)?),
+            TimerArea::N128(_) => TimerArea::N128(timer_area(&words, now)?),
+            TimerArea::N256(_) => TimerArea::N256(timer_area(&words, now)?),
+            TimerArea::N512(_) => TimerArea::N512(timer_area(&words, now)?),
+            TimerArea::N1024(_) => TimerArea::N1024(timer_area(&words, now)?),
+            TimerArea::N2048(_) => TimerArea::N2048(timer_area(&words, now)?),
+        };
+        self.last = last.map(CpuTime::from_millis);
+        Ok(())
     }
 
     fn __len__(&self) -> usize {
@@ -147,8 +230,9 @@ impl PyTimerMemory {
     }
 
     /// `n` ticks of the time base `base_ms` (10, 100, 1000, 10000) on every running timer.
-    fn tick(&mut self, base_ms: &Bound<'_, PyAny>, n: u64) -> PyResult<()> {
+    fn tick(&mut self, base_ms: &Bound<'_, PyAny>, n: &Bound<'_, PyAny>) -> PyResult<()> {
         let base = time_base(base_ms)?;
+        let n = args::int_in::<u64>(n, "n", "a number of ticks, 0..=18446744073709551615")?;
         with!(TimerArea, &mut self.area, m => m.tick(base, n));
         Ok(())
     }
@@ -252,6 +336,7 @@ impl PyTimerMemory {
 /// >>> (area.load(5), area.status(5))
 /// (0, False)
 #[pyclass(module = "plc_timers", name = "CounterMemory")]
+#[derive(Clone)]
 pub struct PyCounterMemory {
     area: CounterArea,
     count: usize,
@@ -262,11 +347,60 @@ impl PyCounterMemory {
     /// An area of `count` cleared counters: 64, 128, 256, 512, 1024 or 2048.
     #[new]
     #[pyo3(signature = (count = 256))]
-    fn new(count: usize) -> PyResult<Self> {
+    fn new(count: i128) -> PyResult<Self> {
+        let area = CounterArea::new(count)?;
         Ok(PyCounterMemory {
-            area: CounterArea::new(count)?,
-            count,
+            count: with!(CounterArea, &area, m => m.words().len()),
+            area,
         })
+    }
+
+    /// A copy with the same counters: `copy.copy(area)` and `copy.deepcopy(area)` (a snapshot
+    /// to go back to).
+    fn __copy__(&self) -> Self {
+        self.clone()
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.clone()
+    }
+
+    /// For pickle: `CounterMemory(count)`, then every counter word's 16 bits (`C 0` first).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<CounterMemoryReduce<'py>> {
+        let this = slf.borrow();
+        let words =
+            with!(CounterArea, &this.area, m => m.words().iter().map(|w| w.bits()).collect());
+        Ok((slf.get_type(), (this.count,), (words,)))
+    }
+
+    /// Restores what `__reduce__` saved; a word no counter can hold is a `ValueError`.
+    fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let (bits,): (Vec<u16>,) = state
+            .extract()
+            .map_err(|_| PyValueError::new_err("a CounterMemory's state is ([word, …],)"))?;
+        if bits.len() != self.count {
+            return Err(PyValueError::new_err(format!(
+                "the state has {} counters; this area has {}",
+                bits.len(),
+                self.count
+            )));
+        }
+        let mut area = self.area.clone();
+        for (i, &b) in bits.iter().enumerate() {
+            let state = S5Counter::from_bits(b)
+                .map(S5Counter::state)
+                .ok_or_else(|| {
+                    PyValueError::new_err(format!("C {i}: 0x{b:04X} is not a counter word"))
+                })?;
+            let set = with!(CounterArea, &mut area, m => m.set_state(i, state)).map_err(no_such)?;
+            if !set {
+                return Err(PyValueError::new_err(format!(
+                    "C {i}: 0x{b:04X} is not a counter word"
+                )));
+            }
+        }
+        self.area = area;
+        Ok(())
     }
 
     fn __len__(&self) -> usize {

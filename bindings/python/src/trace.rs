@@ -6,7 +6,7 @@
 
 use std::io::Cursor;
 
-use plc_timers::catalog::{Block, Kind, ValueKind};
+use plc_timers::catalog::{Block, Kind, PresetKind, ValueKind};
 use plc_timers::rule::RuleSet;
 use plc_timers_cli::trace::engine::parse_value;
 use plc_timers_cli::trace::error::show;
@@ -17,7 +17,8 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList, PyString};
 
-use crate::args::{shown, type_name};
+use crate::args::{self, shown, type_name};
+use crate::blocks::counter_pv;
 use crate::literals::{PyCounterPreset, PyS5Time, PyTime};
 
 /// A `plc_timers.TraceError` with its attributes.
@@ -42,17 +43,56 @@ fn trace_exception(
     err
 }
 
-/// The engine's bad-input error as a `plc_timers.TraceError`.
+/// `text` with the command line's options (`--pt`, `option --pt`) named as the keyword
+/// arguments a Python caller gives (`keyword argument pt`): the engine's messages are written
+/// for the command line, and a Python user never typed a flag.
+fn keywords(text: &str) -> String {
+    const OPTIONS: [&str; 4] = ["tv", "pt", "pv", "type"];
+    let mut out = String::with_capacity(text.len() + 16);
+    let mut rest = text;
+    while let Some(at) = rest.find("--") {
+        let after = &rest[at + 2..];
+        let name_len = after
+            .bytes()
+            .take_while(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'-')
+            .count();
+        let name = &after[..name_len];
+        if !OPTIONS.contains(&name) {
+            // Not an option of theirs (e.g. a cell's text shown in the message): as it is.
+            out.push_str(&rest[..at + 2]);
+            rest = after;
+            continue;
+        }
+        let before = &rest[..at];
+        // "the option --pt" and "option --pt" already say what it is; a bare "--pt" needs it.
+        let before = before
+            .strip_suffix("the option ")
+            .or_else(|| before.strip_suffix("option "))
+            .unwrap_or(before);
+        out.push_str(before);
+        out.push_str("the keyword argument ");
+        out.push_str(name);
+        rest = &after[name_len..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The engine's bad-input error as a `plc_timers.TraceError`, worded for Python ([`keywords`]).
 fn engine_error(py: Python<'_>, e: engine::TraceError) -> PyErr {
-    let text = e.to_string();
+    let message = keywords(&e.message);
+    let text = match &e.location {
+        Location::Option(o) => format!("keyword argument {o}: {message}"),
+        _ => keywords(&e.to_string()),
+    };
     match &e.location {
-        Location::Command => trace_exception(py, text, &e.message, None, None, None, None),
-        Location::Option(o) => trace_exception(py, text, &e.message, None, None, None, Some(o)),
-        Location::Line(l) => trace_exception(py, text, &e.message, Some(*l), None, None, None),
+        Location::Command => trace_exception(py, text, &message, None, None, None, None),
+        Location::Option(o) => trace_exception(py, text, &message, None, None, None, Some(o)),
+        Location::Line(l) => trace_exception(py, text, &message, Some(*l), None, None, None),
         Location::Cell { line, column, name } => trace_exception(
             py,
             text,
-            &e.message,
+            &message,
             Some(*line),
             Some(*column),
             Some(name),
@@ -95,15 +135,48 @@ fn push_field(out: &mut String, text: &str) {
     }
 }
 
+/// A preset given as a Python value (not a literal's text), read by the reader the block
+/// classes use for it: one rule for `TON(pt=…)`, `run("TON", …, pt=…)` and a `PT` cell, so a
+/// value of another literal type (a `CounterPreset` as PT, a `Time` as PV) is a `TypeError`
+/// there as here, and an int is a word (TV), milliseconds (PT) or a count (PV) everywhere.
+fn typed_preset(spec: BlockSpec, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<PresetValue> {
+    match spec.block.preset().kind {
+        PresetKind::S5Time => args::s5time(obj, name).map(PresetValue::S5Time),
+        PresetKind::Time => args::time(obj, name).map(PresetValue::Time),
+        PresetKind::Integer => counter_pv(obj, spec.int_type, name).map(PresetValue::Integer),
+        PresetKind::S5Count => args::counter_preset(obj, name).map(PresetValue::S5Count),
+    }
+}
+
+/// A preset as the text of a trace cell, which the engine reads back to the same value.
+fn preset_cell(value: PresetValue) -> String {
+    match value {
+        PresetValue::S5Time(t) => format!("W#16#{:04X}", t.to_word()),
+        PresetValue::Time(t) => t.as_millis().to_string(),
+        PresetValue::Integer(i) => i.to_string(),
+        PresetValue::S5Count(p) => format!("C#{}", p.value()),
+    }
+}
+
 /// A cell's text: a bool as 1/0, an int in decimal, a str as it is, an `S5Time` as its word, a
-/// `Time` in ms, a `CounterPreset` as `C#n`.
+/// `Time` in ms, a `CounterPreset` as `C#n`; in the block's preset column, any value but a str
+/// is read as the keyword argument is ([`typed_preset`]).
 fn cell_text(
     py: Python<'_>,
+    spec: BlockSpec,
     obj: &Bound<'_, PyAny>,
     line: u64,
     column: (usize, &str),
 ) -> PyResult<String> {
     let bad = |what: String| Err(input_error(py, line, Some(column), what));
+    let preset = spec.block.preset();
+    if column.1.trim() == preset.port.name() && !obj.is_instance_of::<PyString>() {
+        return match typed_preset(spec, obj, column.1.trim()) {
+            Ok(v) => Ok(preset_cell(v)),
+            // The reader's text says what is allowed; the error says where.
+            Err(e) => bad(e.value(py).to_string()),
+        };
+    }
     if obj.is_instance_of::<PyBool>() {
         return Ok(if obj.extract::<bool>()? { "1" } else { "0" }.to_string());
     }
@@ -146,6 +219,7 @@ fn cell_text(
 /// The rows as the CSV text of a trace: header, then one line per row.
 fn csv_of(
     py: Python<'_>,
+    spec: BlockSpec,
     rows: &Bound<'_, PyAny>,
     columns: Option<Vec<String>>,
 ) -> PyResult<String> {
@@ -278,7 +352,7 @@ fn csv_of(
             if i > 0 {
                 out.push(',');
             }
-            let text = cell_text(py, cell, line, (i + 1, &columns[i]))?;
+            let text = cell_text(py, spec, cell, line, (i + 1, &columns[i]))?;
             push_field(&mut out, &text);
         }
         out.push('\n');
@@ -316,85 +390,60 @@ impl Request {
         let mut preset = None;
         for (name, given) in [("tv", tv), ("pt", pt), ("pv", pv)] {
             if let Some(obj) = given {
-                let text = preset_text(py, obj, name)?;
-                preset = Some(preset_value(spec, name, &text).map_err(|e| engine_error(py, e))?);
+                preset = Some(preset_value(py, spec, name, obj)?);
             }
         }
         Ok(Request { spec, preset })
     }
 }
 
-/// The preset keyword `name` given as `text`, read for the block of `spec` as the command
-/// line's parser reads its preset option: a keyword the block does not take is refused with
-/// the one it does take, and the value is read as the block's preset cell is.
+/// The preset keyword argument `name` given as `obj`: a keyword the block does not take is
+/// refused with the one it does take; a str is read as the command line reads its preset
+/// option (the same text, the same error), any other value by [`typed_preset`].
 fn preset_value(
+    py: Python<'_>,
     spec: BlockSpec,
     name: &'static str,
-    text: &str,
-) -> Result<PresetValue, engine::TraceError> {
+    obj: &Bound<'_, PyAny>,
+) -> PyResult<PresetValue> {
     let block = spec.block;
     let preset = block.preset();
     if name != preset.option {
-        return Err(engine::TraceError::new(
-            Location::Command,
-            format!(
-                "option --{name} does not apply to {block}; its preset {} is given with --{}",
-                preset.port.name(),
-                preset.option
+        return Err(engine_error(
+            py,
+            engine::TraceError::new(
+                Location::Command,
+                format!(
+                    "the keyword argument {name} does not apply to {block}; its preset {} is \
+                     the keyword argument {}",
+                    preset.port.name(),
+                    preset.option
+                ),
             ),
         ));
     }
-    PresetValue::parse(spec, text).map_err(|e| {
-        engine::TraceError::new(
-            Location::Option(preset.option),
-            format!("`{}`: {e}", show(text.as_bytes())),
+    let Ok(text) = obj.cast::<PyString>() else {
+        // A value of the wrong type is the block classes' TypeError; a value out of range
+        // their ValueError, here as the TraceError (a ValueError) of the keyword argument.
+        return typed_preset(spec, obj, name).map_err(|e| {
+            if e.is_instance_of::<PyTypeError>(py) {
+                return e;
+            }
+            let message = e.value(py).to_string();
+            let text = format!("keyword argument {name}: {message}");
+            trace_exception(py, text, &message, None, None, None, Some(name))
+        });
+    };
+    let text = text.to_cow()?;
+    PresetValue::parse(spec, &text).map_err(|e| {
+        engine_error(
+            py,
+            engine::TraceError::new(
+                Location::Option(preset.option),
+                format!("`{}`: {e}", show(text.as_bytes())),
+            ),
         )
     })
-}
-
-/// A preset keyword as the command line's option text.
-fn preset_text(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &'static str) -> PyResult<String> {
-    if let Ok(t) = obj.cast::<PyS5Time>() {
-        return Ok(format!("W#16#{:04X}", t.get().0.to_word()));
-    }
-    if let Ok(t) = obj.cast::<PyTime>() {
-        return Ok(t.get().0.as_millis().to_string());
-    }
-    if let Ok(p) = obj.cast::<PyCounterPreset>() {
-        return Ok(p.get().0.value().to_string());
-    }
-    if let Ok(s) = obj.cast::<PyString>() {
-        return Ok(s.to_cow()?.into_owned());
-    }
-    if !obj.is_instance_of::<PyBool>() {
-        if let Ok(i) = obj.extract::<i128>() {
-            // An int TV is a word, as the blocks take it; PT is ms, PV a count.
-            return Ok(if name == "tv" {
-                match u16::try_from(i) {
-                    Ok(w) => format!("W#16#{w:04X}"),
-                    Err(_) => i.to_string(),
-                }
-            } else {
-                i.to_string()
-            });
-        }
-    }
-    Err(trace_exception(
-        py,
-        format!(
-            "option --{name}: {} ({}) is not a preset; give a literal (str) or an int",
-            shown(obj),
-            type_name(obj)
-        ),
-        &format!(
-            "{} is not a preset; give a literal (str) or an int",
-            shown(obj)
-        ),
-        None,
-        None,
-        None,
-        Some(name),
-    ))
 }
 
 /// A value of the trace format as a Python object: bool, int, or int (a word).
@@ -441,7 +490,7 @@ fn run(
     optimized: bool,
 ) -> PyResult<Py<PyList>> {
     let request = Request::new(py, block, tv, pt, pv, r#type, optimized)?;
-    let csv = csv_of(py, rows, columns)?;
+    let csv = csv_of(py, request.spec, rows, columns)?;
     let mut out = Vec::with_capacity(csv.len() * 2);
     let result = engine::run(
         request.spec,
@@ -563,7 +612,7 @@ fn check(
     optimized: bool,
 ) -> PyResult<Option<PyDifference>> {
     let request = Request::new(py, block, tv, pt, pv, r#type, optimized)?;
-    let csv = csv_of(py, rows, columns)?;
+    let csv = csv_of(py, request.spec, rows, columns)?;
     let names: Option<Vec<&str>> = outputs
         .as_ref()
         .map(|o| o.iter().map(String::as_str).collect());

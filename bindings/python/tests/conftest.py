@@ -15,13 +15,19 @@ REPO = Path(__file__).resolve().parents[3]
 EXAMPLES = REPO / "examples" / "traces"
 
 
+# Set by ci.sh: every test must run there, so a skip (e.g. the command not found) fails the run.
+NO_SKIPS = os.environ.get("PLC_TIMERS_NO_SKIPS") == "1"
+
+
 def find_cli() -> Path | None:
-    """The `plc-timers` command: $PLC_TIMERS_BIN, else a build in the repository's target/."""
+    """The `plc-timers` command: $PLC_TIMERS_BIN, else a build in cargo's target directory
+    ($CARGO_TARGET_DIR, else the repository's target/)."""
     given = os.environ.get("PLC_TIMERS_BIN")
     if given:
         return Path(given)
+    target = Path(os.environ.get("CARGO_TARGET_DIR") or REPO / "target")
     for profile in ("release", "debug"):
-        candidate = REPO / "target" / profile / "plc-timers"
+        candidate = target / profile / "plc-timers"
         if candidate.exists():
             return candidate
     found = shutil.which("plc-timers")
@@ -63,6 +69,21 @@ def vector_files(root: Path) -> Iterator[Tuple[str, str, Path]]:
         block, _, int_type = d.name.partition("-")
         for f in sorted(d.glob("*.csv")):
             yield block, int_type or "INT", f
+
+
+_skipped: List[str] = []
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    if report.skipped:
+        _skipped.append(report.nodeid)
+
+
+def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
+    """With PLC_TIMERS_NO_SKIPS=1 (CI), a skipped test is a failure: it should have run."""
+    if NO_SKIPS and _skipped and exitstatus == 0:
+        print(f"\n{len(_skipped)} test(s) skipped where every test must run:", *_skipped[:5])
+        session.exitstatus = pytest.ExitCode.TESTS_FAILED
 
 
 def as_dicts(header: List[str], rows: List[List[str]]) -> List[Dict[str, str]]:

@@ -224,8 +224,9 @@ def test_check_names_the_rules_the_command_names(cli: Path, path: Path, tmp_path
 def test_preset_keyword_errors_are_the_command_s(
     cli: Path, tmp_path: Path, block: str, keyword: str, value: str, option: Union[str, None]
 ) -> None:
-    """A preset keyword is read as the command line's parser reads its option: the same text,
-    before any row is read (the trace below is valid)."""
+    """A preset keyword is read as the command line's parser reads its option: the same
+    message, before any row is read (the trace below is valid), naming the keyword argument
+    where the command names its option (`--pt`), which a Python user never typed."""
     columns = {"TON": ["t_ms", "IN"], "S_CU": ["CU"], "CTU": ["CU"], "S_ODT": ["t_ms", "S"]}[block]
     presets: Dict[str, Any] = {keyword: value}
     with pytest.raises(plc_timers.TraceError) as e:
@@ -239,4 +240,12 @@ def test_preset_keyword_errors_are_the_command_s(
         text=True,
     )
     assert done.returncode != 0
-    assert done.stderr.splitlines()[0] == f"error: {e.value}"
+    assert "--" not in str(e.value)
+    first = done.stderr.splitlines()[0]
+    if option is None:
+        # The command refuses the option; Python names the keyword the block takes.
+        assert f"--{keyword}" in first
+        assert f"the keyword argument {keyword} does not apply to {block}" in str(e.value)
+    else:
+        assert first == f"error: option --{option}: {e.value.message}"
+        assert str(e.value) == f"keyword argument {option}: {e.value.message}"
