@@ -69,21 +69,7 @@ pub fn prop_tv_latched(
 /// base and every valid flag combination.
 #[cfg(not(kani))]
 fn some_states() -> impl Iterator<Item = S5State> {
-    [0u16, 1, 2, 998, 999].into_iter().flat_map(|value| {
-        TimeBase::ALL.into_iter().flat_map(move |base| {
-            (0..32u8)
-                .map(move |f| S5State {
-                    running: f & 1 != 0,
-                    value,
-                    base,
-                    q: f & 2 != 0,
-                    q_on_expiry: f & 4 != 0,
-                    s_prev: f & 8 != 0,
-                    fr_prev: f & 16 != 0,
-                })
-                .filter(S5State::is_valid)
-        })
-    })
+    crate::s5::states_with_values([0u16, 1, 2, 998, 999])
 }
 
 /// Exhaustive over every kind, the states of [`some_states`], tick counts 0, 1, 999 and 1000,

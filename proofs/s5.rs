@@ -226,7 +226,13 @@ pub fn prop_kind_rules(kind: S5Kind, state: S5State, ticks: u64, input: S5Input)
 /// Every valid S5 state: value 0..=999, four bases, the five flags with no expiry status on a
 /// stopped timer (24 combinations): 96 000 states.
 pub fn all_states() -> impl Iterator<Item = S5State> {
-    (0..=999u16).flat_map(|value| {
+    states_with_values(0..=999u16)
+}
+
+/// Every valid S5 state with one of `values`: four bases, the five flags with no expiry status
+/// on a stopped timer (24 combinations per value and base).
+pub fn states_with_values(values: impl IntoIterator<Item = u16>) -> impl Iterator<Item = S5State> {
+    values.into_iter().flat_map(|value| {
         TimeBase::ALL.into_iter().flat_map(move |base| {
             (0..32u8)
                 .map(move |f| S5State {
