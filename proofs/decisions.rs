@@ -13,7 +13,7 @@ use plc_timers::counter::s5::{
 };
 use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerMemory};
-use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+use plc_timers::time::{CpuTime, S5Time, Time};
 
 use crate::s5::start_signal;
 
