@@ -140,17 +140,24 @@ impl Site {
     /// The assertion is reached: its IDs go into this thread's collection (once per collection;
     /// a site only ever holds the number of a collection it has recorded into).
     pub fn reached(&self) {
-        let c = COLLECTION.with(Cell::get);
-        if c == 0 || self.recorded_in.load(Ordering::Relaxed) == c {
-            return;
-        }
-        self.recorded_in.store(c, Ordering::Relaxed);
-        HITS.with(|h| {
-            if let Some(hits) = h.borrow_mut().as_mut() {
-                hits.checked.extend(ids(self.msg));
-            }
-        });
+        once_per_collection(&self.recorded_in, |hits| hits.checked.extend(ids(self.msg)));
     }
+}
+
+/// Runs `record` on this thread's collection, at most once per collection for one site:
+/// `marker` holds the number of the last collection the site recorded into (0: none is open).
+#[cfg(not(kani))]
+fn once_per_collection(marker: &AtomicU64, record: impl FnOnce(&mut Hits)) {
+    let c = COLLECTION.with(Cell::get);
+    if c == 0 || marker.load(Ordering::Relaxed) == c {
+        return;
+    }
+    marker.store(c, Ordering::Relaxed);
+    HITS.with(|h| {
+        if let Some(hits) = h.borrow_mut().as_mut() {
+            record(hits);
+        }
+    });
 }
 
 /// Whether `token` looks like a requirement ID: upper-case words and digits joined by `-`, at
@@ -211,16 +218,9 @@ impl Declared {
     /// The function is entered: its covers go into this thread's collection, satisfied or not
     /// (once per collection, as [`Site::reached`]).
     pub fn enter(&self) {
-        let c = COLLECTION.with(Cell::get);
-        if c == 0 || self.declared_in.load(Ordering::Relaxed) == c {
-            return;
-        }
-        self.declared_in.store(c, Ordering::Relaxed);
-        HITS.with(|h| {
-            if let Some(hits) = h.borrow_mut().as_mut() {
-                for &msg in self.msgs {
-                    hits.covers.entry(msg).or_insert(0);
-                }
+        once_per_collection(&self.declared_in, |hits| {
+            for &msg in self.msgs {
+                hits.covers.entry(msg).or_insert(0);
             }
         });
     }
