@@ -547,7 +547,7 @@ impl<C: ClockWord> IecCase<C> {
 
     /// The preset at the box, as the instruction takes it (negative as 0, IEC-ET-RANGE-01).
     fn box_pt(&self) -> C {
-        C::from_preset(self.input.pt.clamp_negative())
+        C::from_preset(u64::from(self.input.pt.clamp_negative()))
     }
 }
 

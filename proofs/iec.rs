@@ -37,8 +37,8 @@ impl ClockWord for U4 {
     fn to_u64(self) -> u64 {
         u64::from(self.0)
     }
-    fn from_preset(millis: u32) -> Self {
-        U4(millis.min(15) as u8)
+    fn from_preset(units: u64) -> Self {
+        U4(units.min(15) as u8)
     }
 }
 

@@ -371,6 +371,26 @@ impl Block {
         Preset { port, option, kind }
     }
 
+    /// The data types the block runs on: S5TIME for the S5 timers, TIME and LTIME for the IEC
+    /// timers, the eight integer types for the IEC counters, WORD for the S5 counters.
+    pub const fn data_types(self) -> &'static [DataType] {
+        match self.family() {
+            Family::S5Timer => S5_TIMER_TYPES,
+            Family::IecTimer => IEC_TIMER_TYPES,
+            Family::IecCounter => IEC_COUNTER_TYPES,
+            Family::S5Counter => S5_COUNTER_TYPES,
+        }
+    }
+
+    /// The data type taken when none is selected: INT for the IEC counters (TIA Portal's
+    /// default), TIME for the IEC timers, the only one for the S5 blocks.
+    pub const fn default_data_type(self) -> DataType {
+        match self.family() {
+            Family::IecCounter => DataType::Int,
+            _ => self.data_types()[0],
+        }
+    }
+
     /// Whether `port` is one of the block's inputs.
     pub const fn has_input(self, port: Port) -> bool {
         let inputs = self.inputs();
@@ -387,6 +407,107 @@ impl Block {
     /// Whether a trace of this block needs the CPU time (`t_ms`).
     pub const fn requires_time(self) -> bool {
         self.family().is_timer()
+    }
+}
+
+/// The data type an instruction runs on, as TIA Portal selects it below the box (`TON` of
+/// `LTIME`, `CTU` of `DINT`); [`Block::data_types`] lists a block's,
+/// [`Block::default_data_type`] names the one taken when none is selected.
+///
+/// ```
+/// use plc_timers::catalog::{Block, DataType};
+/// assert_eq!(Block::Tof.data_types(), [DataType::Time, DataType::LTime]);
+/// assert_eq!(DataType::lookup("ltime"), Some(DataType::LTime));
+/// assert_eq!(Block::Ctud.default_data_type(), DataType::Int);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum DataType {
+    /// `S5TIME`: the S5 timers' time value (their only type).
+    S5Time,
+    /// `WORD`: the S5 counters' count value, three BCD digits (their only type).
+    Word,
+    /// `TIME`: signed 32-bit ms, the `IEC_TIMER` (S7-1200/1500).
+    Time,
+    /// `LTIME`: signed 64-bit ns, the `IEC_LTIMER` (S7-1500).
+    LTime,
+    /// `SINT`: 8-bit signed.
+    SInt,
+    /// `INT`: 16-bit signed.
+    Int,
+    /// `DINT`: 32-bit signed.
+    DInt,
+    /// `LINT`: 64-bit signed.
+    LInt,
+    /// `USINT`: 8-bit unsigned.
+    USInt,
+    /// `UINT`: 16-bit unsigned.
+    UInt,
+    /// `UDINT`: 32-bit unsigned.
+    UDInt,
+    /// `ULINT`: 64-bit unsigned.
+    ULInt,
+}
+
+const S5_TIMER_TYPES: &[DataType] = &[DataType::S5Time];
+const S5_COUNTER_TYPES: &[DataType] = &[DataType::Word];
+const IEC_TIMER_TYPES: &[DataType] = &[DataType::Time, DataType::LTime];
+const IEC_COUNTER_TYPES: &[DataType] = &[
+    DataType::SInt,
+    DataType::Int,
+    DataType::DInt,
+    DataType::LInt,
+    DataType::USInt,
+    DataType::UInt,
+    DataType::UDInt,
+    DataType::ULInt,
+];
+
+impl DataType {
+    /// Every data type.
+    pub const ALL: [DataType; 12] = [
+        DataType::S5Time,
+        DataType::Word,
+        DataType::Time,
+        DataType::LTime,
+        DataType::SInt,
+        DataType::Int,
+        DataType::DInt,
+        DataType::LInt,
+        DataType::USInt,
+        DataType::UInt,
+        DataType::UDInt,
+        DataType::ULInt,
+    ];
+
+    /// The name as the manual writes it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            DataType::S5Time => "S5TIME",
+            DataType::Word => "WORD",
+            DataType::Time => "TIME",
+            DataType::LTime => "LTIME",
+            DataType::SInt => "SINT",
+            DataType::Int => "INT",
+            DataType::DInt => "DINT",
+            DataType::LInt => "LINT",
+            DataType::USInt => "USINT",
+            DataType::UInt => "UINT",
+            DataType::UDInt => "UDINT",
+            DataType::ULInt => "ULINT",
+        }
+    }
+
+    /// The data type called `name` (ASCII case ignored).
+    pub fn lookup(name: &str) -> Option<DataType> {
+        DataType::ALL
+            .into_iter()
+            .find(|t| t.name().eq_ignore_ascii_case(name))
+    }
+}
+
+impl core::fmt::Display for DataType {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

@@ -83,6 +83,7 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod block;
 pub mod catalog;
 pub mod counter;
 pub mod iec;

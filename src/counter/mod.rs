@@ -42,7 +42,9 @@ use core::fmt::Debug;
 /// assert_eq!(<u8 as CounterInt>::NAME, "USINT");
 /// assert_eq!(i16::MAX.saturating_inc(), i16::MAX); // never wraps
 /// ```
-pub trait CounterInt: Copy + Ord + Debug + Default + Send + Sync + 'static {
+pub trait CounterInt:
+    Copy + Ord + Debug + core::fmt::Display + Default + Send + Sync + 'static
+{
     /// The type's name in the manual (`INT`, `UDINT`, …).
     const NAME: &'static str;
     /// The smallest value.
@@ -305,4 +307,107 @@ pub fn outputs<T: CounterInt>(cv: T, pv: T) -> CounterOutput<T> {
         qd: cv <= T::ZERO,
         cv,
     }
+}
+
+/// A preset that is not a whole number of the counter's integer type.
+///
+/// ```
+/// use plc_timers::block::Family;
+/// use plc_timers::counter::Counters;
+/// let e = <Counters<i16> as Family>::parse_preset("40000").expect_err("beyond INT");
+/// assert_eq!(e.to_string(), "not a valid INT preset; PV is a whole number from -32768 to 32767");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IntPresetError {
+    /// The type's name.
+    pub type_name: &'static str,
+    /// Its smallest value.
+    pub min: i128,
+    /// Its largest value.
+    pub max: i128,
+}
+
+impl core::fmt::Display for IntPresetError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "not a valid {} preset; PV is a whole number from {} to {}",
+            self.type_name, self.min, self.max
+        )
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for IntPresetError {}
+
+/// The IEC counters over the integer type `T`, as one [`Family`](crate::block::Family) of
+/// the block interface: `CU`, `CD`, `R`, `LD` and `PV` in; `Q` (`QU`/`QD`) and `CV` out.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counters<T = i16>(core::marker::PhantomData<T>);
+
+impl<T: CounterInt> crate::block::Family for Counters<T> {
+    type Kind = CounterKind;
+    type Input = CounterInput<T>;
+    type Output = CounterOutput<T>;
+    type State = CounterState<T>;
+    type Preset = T;
+    type PresetError = IntPresetError;
+    type Unit = crate::time::Millis;
+
+    fn kind(block: crate::catalog::Block) -> Option<CounterKind> {
+        match block.kind() {
+            crate::catalog::Kind::IecCounter(k) => Some(k),
+            _ => None,
+        }
+    }
+
+    #[inline]
+    fn input(signals: crate::block::Signals, pv: T) -> CounterInput<T> {
+        use crate::catalog::Port;
+        CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_r(signals.get(Port::R))
+            .with_ld(signals.get(Port::Ld))
+    }
+
+    #[inline]
+    fn values(kind: CounterKind, o: &CounterOutput<T>) -> crate::block::Outputs {
+        use crate::block::{Outputs, Value};
+        let cv = Value::Int(o.cv.to_i128());
+        match kind {
+            CounterKind::Ctu => Outputs::two(Value::Bool(o.qu), cv),
+            CounterKind::Ctd => Outputs::two(Value::Bool(o.qd), cv),
+            CounterKind::Ctud => Outputs::three(Value::Bool(o.qu), Value::Bool(o.qd), cv),
+        }
+    }
+
+    fn parse_preset(text: &str) -> Result<T, IntPresetError> {
+        let error = IntPresetError {
+            type_name: T::NAME,
+            min: T::MIN.to_i128(),
+            max: T::MAX.to_i128(),
+        };
+        let value: i128 = text.trim().parse().map_err(|_| error)?;
+        T::from_i128(value).ok_or(error)
+    }
+
+    fn preset_units(pv: T) -> i128 {
+        pv.to_i128()
+    }
+
+    fn ramp(_: &CounterOutput<T>) -> Option<u64> {
+        None
+    }
+}
+
+crate::block::block_ops! {
+    impl[T: CounterInt] CounterRef<T>: Counters<T>,
+    call: |c, kind, _now, input| CounterOps::call(c, kind, input),
+    state: CounterOps::state,
+    explains: |c, kind, _now, input| c.call_explained(kind, input),
+}
+
+crate::block::block_ops! {
+    impl[T: CounterInt] Counter<T>: Counters<T>,
+    call: |c, kind, _now, input| CounterOps::call(c, kind, input),
+    state: CounterOps::state,
 }

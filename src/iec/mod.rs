@@ -37,11 +37,11 @@ pub mod reference;
 pub mod structure;
 
 use crate::time::clock::ClockWord;
-use crate::time::{CpuTime, Time};
+use crate::time::{CpuTime, IecDuration, Time};
 
 pub use bank::TonBank;
-pub use reference::IecTimerRef;
-pub use structure::{IecTimer, IecTimerOf};
+pub use reference::{IecLTimerRef, IecTimerRef};
+pub use structure::{IecLTimer, IecTimer, IecTimerOf};
 
 /// Which timer instruction runs on the structure.
 ///
@@ -88,11 +88,11 @@ impl IecKind {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(kani, derive(kani::Arbitrary))]
 #[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
-pub struct IecInput {
+pub struct IecInput<D = Time> {
     /// `IN`.
     pub input: bool,
     /// `PT`, the preset; negative values are taken as 0 (S7-1200 manual, Table 8-21 note 1).
-    pub pt: Time,
+    pub pt: D,
     /// `R` (TONR only; ignored by TP, TON and TOF).
     pub reset: bool,
 }
@@ -104,13 +104,13 @@ pub struct IecInput {
 /// use plc_timers::time::Time;
 /// assert_eq!(IecInput::default(), IecInput::new(false, Time::ZERO));
 /// ```
-impl Default for IecInput {
-    fn default() -> IecInput {
-        IecInput::new(false, Time::ZERO)
+impl<D: IecDuration> Default for IecInput<D> {
+    fn default() -> IecInput<D> {
+        IecInput::new(false, D::ZERO)
     }
 }
 
-impl IecInput {
+impl<D: IecDuration> IecInput<D> {
     /// `IN` and `PT`, with `R` = 0.
     ///
     /// ```
@@ -118,7 +118,7 @@ impl IecInput {
     /// let input = IecInput::new(true, plc_timers::time!("T#2S"));
     /// assert!(input.input && !input.reset);
     /// ```
-    pub const fn new(input: bool, pt: Time) -> IecInput {
+    pub const fn new(input: bool, pt: D) -> IecInput<D> {
         IecInput {
             input,
             pt,
@@ -128,7 +128,7 @@ impl IecInput {
 
     /// These inputs with `R` = `reset`.
     #[must_use]
-    pub const fn with_reset(self, reset: bool) -> IecInput {
+    pub const fn with_reset(self, reset: bool) -> IecInput<D> {
         IecInput { reset, ..self }
     }
 }
@@ -232,20 +232,183 @@ impl<C: ClockWord> IecState<C> {
 /// assert_eq!(after_rt(IecTimerRef::new()), (false, 0));
 /// assert_eq!(after_rt(IecTimer::new()), (false, 0));
 /// ```
-pub trait IecTimerOps<C: ClockWord> {
+pub trait IecTimerOps<C: ClockWord, D: IecDuration = Time> {
     /// Executes the box (or coil) instruction `kind` with its inputs; returns `Q` and `ET`.
-    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C>;
+    fn call(&mut self, kind: IecKind, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C>;
     /// Reads the structure's `Q` member: an update at `now` happens first (IEC-ACCESS-01).
-    fn read_q(&mut self, now: CpuTime) -> bool;
+    fn read_q(&mut self, now: CpuTime<D::Unit>) -> bool;
     /// Reads the structure's `ELAPSED` member: an update at `now` happens first (IEC-ACCESS-01).
-    fn read_et(&mut self, now: CpuTime) -> C;
+    fn read_et(&mut self, now: CpuTime<D::Unit>) -> C;
     /// The `-(RT)-` coil with power flow: resets the timer data (see `spec/iec.md`, IEC-RT-01).
     fn reset_timer(&mut self);
     /// The `-(PT)-` coil with power flow: loads `pt` into the structure's preset.
-    fn preset_timer(&mut self, pt: Time);
+    fn preset_timer(&mut self, pt: D);
     /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial values; a
     /// retentive one keeps its data.
     fn run_stop_run(&mut self, retentive: bool);
     /// The observable state.
     fn state(&self) -> IecState<C>;
+}
+
+/// The IEC timers on the data type `D` (`TIME`, `LTIME`) over the clock word `C`, as one
+/// [`Family`](crate::block::Family) of the block interface: `IN`, `R` (TONR) and `PT` in, the
+/// `-(RT)-` coil, `Q` and `ET` out; the clock in `D`'s unit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct IecTimers<C = u32, D = Time>(core::marker::PhantomData<(C, D)>);
+
+impl<C: ClockWord, D: IecDuration> crate::block::Family for IecTimers<C, D> {
+    type Kind = IecKind;
+    type Input = IecInput<D>;
+    type Output = IecOutput<C>;
+    type State = IecState<C>;
+    type Preset = D;
+    type PresetError = crate::time::LiteralError;
+    type Unit = D::Unit;
+
+    fn kind(block: crate::catalog::Block) -> Option<IecKind> {
+        match block.kind() {
+            crate::catalog::Kind::IecTimer(k) => Some(k),
+            _ => None,
+        }
+    }
+
+    #[inline]
+    fn input(signals: crate::block::Signals, pt: D) -> IecInput<D> {
+        use crate::catalog::Port;
+        IecInput::new(signals.get(Port::In), pt).with_reset(signals.get(Port::R))
+    }
+
+    #[inline]
+    fn values(_: IecKind, o: &IecOutput<C>) -> crate::block::Outputs {
+        use crate::block::{Outputs, Value};
+        Outputs::two(Value::Bool(o.q), Value::Int(i128::from(o.et.to_u64())))
+    }
+
+    fn parse_preset(text: &str) -> Result<D, crate::time::LiteralError> {
+        text.trim().parse()
+    }
+
+    fn preset_units(pt: D) -> i128 {
+        i128::from(pt.units())
+    }
+
+    fn ramp(_: &IecOutput<C>) -> Option<u64> {
+        Some(1)
+    }
+}
+
+/// The `-(RT)-` coil of a row (IEC-RT-01), run before the box call as a network above the
+/// box's would.
+fn rt(signals: crate::block::Signals) -> bool {
+    signals.get(crate::catalog::Port::Rt)
+}
+
+impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerRef<C, D> {
+    crate::block::block_ops!(@types IecTimers<C, D>);
+    const EXPLAINS: bool = true;
+
+    #[inline]
+    fn call(&mut self, kind: IecKind, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C> {
+        IecTimerOps::call(self, kind, now, input)
+    }
+
+    fn call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        input: IecInput<D>,
+    ) -> crate::rule::Explained<IecOutput<C>> {
+        IecTimerRef::call_explained(self, kind, now, input)
+    }
+
+    fn state(&self) -> IecState<C> {
+        IecTimerOps::state(self)
+    }
+
+    fn step(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        signals: crate::block::Signals,
+        pt: D,
+    ) -> IecOutput<C> {
+        if rt(signals) {
+            self.reset_timer();
+        }
+        IecTimerOps::call(
+            self,
+            kind,
+            now,
+            <IecTimers<C, D> as crate::block::Family>::input(signals, pt),
+        )
+    }
+
+    /// A row with `RT` = 1 is the coil and the call explained as one
+    /// ([`IecTimerRef::reset_timer_then_call_explained`]).
+    fn step_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        signals: crate::block::Signals,
+        pt: D,
+    ) -> crate::rule::Explained<IecOutput<C>> {
+        let input = <IecTimers<C, D> as crate::block::Family>::input(signals, pt);
+        if rt(signals) {
+            self.reset_timer_then_call_explained(kind, now, input)
+        } else {
+            IecTimerRef::call_explained(self, kind, now, input)
+        }
+    }
+}
+
+impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerOf<C, D> {
+    crate::block::block_ops!(@types IecTimers<C, D>);
+    const EXPLAINS: bool = false;
+
+    #[inline]
+    fn call(&mut self, kind: IecKind, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C> {
+        IecTimerOps::call(self, kind, now, input)
+    }
+
+    fn call_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        input: IecInput<D>,
+    ) -> crate::rule::Explained<IecOutput<C>> {
+        crate::block::unexplained(IecTimerOps::call(self, kind, now, input))
+    }
+
+    fn state(&self) -> IecState<C> {
+        IecTimerOps::state(self)
+    }
+
+    #[inline]
+    fn step(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        signals: crate::block::Signals,
+        pt: D,
+    ) -> IecOutput<C> {
+        if rt(signals) {
+            self.reset_timer();
+        }
+        IecTimerOps::call(
+            self,
+            kind,
+            now,
+            <IecTimers<C, D> as crate::block::Family>::input(signals, pt),
+        )
+    }
+
+    fn step_explained(
+        &mut self,
+        kind: IecKind,
+        now: CpuTime<D::Unit>,
+        signals: crate::block::Signals,
+        pt: D,
+    ) -> crate::rule::Explained<IecOutput<C>> {
+        crate::block::unexplained(crate::block::BlockOps::step(self, kind, now, signals, pt))
+    }
 }

@@ -7,7 +7,9 @@
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::rule::{out, Explained, Explanation, Recorder, Rule, RuleSet};
 use crate::time::clock::ClockWord;
-use crate::time::{CpuTime, Time};
+use core::marker::PhantomData;
+
+use crate::time::{CpuTime, IecDuration, LTime, Time};
 
 /// The reference model of one `IEC_TIMER` structure on a clock word `C` (`u32` on the CPU).
 ///
@@ -23,14 +25,16 @@ use crate::time::{CpuTime, Time};
 /// assert!(!tp.call(IecKind::Tp, at(100), IecInput::new(false, pt)).q); // ET = PT: over
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct IecTimerRef<C = u32> {
+pub struct IecTimerRef<C = u32, D = Time> {
     /// The structure's members, named as in the manual.
     state: IecState<C>,
+    /// The data type of PT and ET (`TIME` or `LTIME`): their unit, in the type only.
+    unit: PhantomData<D>,
 }
 
 /// `PT` as the instruction uses it: negative taken as 0 (IEC-PT-NEG-01), in clock units.
-fn preset<C: ClockWord>(pt: Time) -> C {
-    C::from_preset(pt.clamp_negative())
+fn preset<C: ClockWord, D: IecDuration>(pt: D) -> C {
+    C::from_preset(pt.units())
 }
 
 /// The outputs Q and ET, as explanations mask them.
@@ -77,21 +81,38 @@ impl IecTimerRef {
                 et: 0,
                 q: false,
             },
+            unit: PhantomData,
         }
     }
 }
 
-impl<C: ClockWord> IecTimerRef<C> {
+/// The reference model of one `IEC_LTIMER` (S7-1500): `PT` and `ET` of data type `LTIME` on
+/// the 64-bit nanosecond clock. `IecLTimerRef::default()` is the initial structure.
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecLTimerRef, IecTimerOps};
+/// use plc_timers::time::CpuTime;
+/// let pt = plc_timers::ltime!("LT#100NS");
+/// let mut tp = IecLTimerRef::default();
+/// assert!(tp.call(IecKind::Tp, CpuTime::from_nanos(0), IecInput::new(true, pt)).q);
+/// assert!(!tp.call(IecKind::Tp, CpuTime::from_nanos(100), IecInput::new(false, pt)).q);
+/// ```
+pub type IecLTimerRef = IecTimerRef<u64, LTime>;
+
+impl<C: ClockWord, D: IecDuration> IecTimerRef<C, D> {
     /// The timer in `state`, or `None` when the state is not valid ([`IecState::is_valid`]).
     ///
     /// ```
     /// use plc_timers::iec::{IecState, IecTimerRef};
     /// let running = IecState::<u32> { running: true, start: 5, pt: 10, ..Default::default() };
-    /// assert!(IecTimerRef::from_state(running).is_some());
-    /// assert!(IecTimerRef::from_state(IecState { et: 11, ..running }).is_none()); // ET > PT
+    /// assert!(IecTimerRef::<u32>::from_state(running).is_some());
+    /// assert!(IecTimerRef::<u32>::from_state(IecState { et: 11, ..running }).is_none()); // ET > PT
     /// ```
-    pub fn from_state(state: IecState<C>) -> Option<IecTimerRef<C>> {
-        state.is_valid().then_some(IecTimerRef { state })
+    pub fn from_state(state: IecState<C>) -> Option<IecTimerRef<C, D>> {
+        state.is_valid().then_some(IecTimerRef {
+            state,
+            unit: PhantomData,
+        })
     }
 
     /// IEC-START-01: on the starting edge the CPU clock is copied into START and the preset is
@@ -100,8 +121,8 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// `also`: further rules that made this start (TP-RETRIGGER-01).
     fn start(
         &mut self,
-        now: CpuTime,
-        pt: Time,
+        now: CpuTime<D::Unit>,
+        pt: D,
         kind: IecKind,
         also: RuleSet,
         rec: &mut impl Recorder,
@@ -133,22 +154,22 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// is known only modulo 2^BITS (a gap of 2^BITS ms or more aliases).
     fn update(
         &mut self,
-        now: CpuTime,
+        now: CpuTime<D::Unit>,
         kind: IecKind,
-        box_pt: Option<Time>,
+        box_pt: Option<D>,
         rec: &mut impl Recorder,
     ) {
         let s = &mut self.state;
         if !s.running {
             return;
         }
-        let t = now.as_millis();
+        let t = now.ticks();
         let now = now.clock::<C>();
         let elapsed = now.elapsed_since(s.start);
         let rules = RuleSet::EMPTY
             .with_if(now < s.start || now.to_u64() != t, Rule::IEC_WRAP_01)
             .with_if(
-                box_pt.is_some_and(|pt| preset::<C>(pt) != s.pt),
+                box_pt.is_some_and(|pt| preset::<C, D>(pt) != s.pt),
                 Rule::IEC_PT_LATCH_01,
             );
         if elapsed >= s.pt {
@@ -180,7 +201,7 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// IEC-ACCESS-01: an instruction reads a member of the structure: the update of the
     /// instruction that last ran on it happens first (none before the first call).
-    fn access(&mut self, now: CpuTime) -> &IecState<C> {
+    fn access(&mut self, now: CpuTime<D::Unit>) -> &IecState<C> {
         if let Some(kind) = self.state.kind {
             self.update(now, kind, None, &mut ());
         }
@@ -199,7 +220,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// TP (Table 8-20: "changing PT or IN while running has no effect"): a rising IN starts a
     /// pulse of PT when no pulse runs; after the pulse ET stays at PT while IN = 1 and returns
     /// to 0 when IN = 0 (TP-ET-01).
-    fn tp(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
+    fn tp(&mut self, now: CpuTime<D::Unit>, input: IecInput<D>, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         let was_running = self.state.running;
         self.update(now, IecKind::Tp, pt, rec);
@@ -220,7 +241,7 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// TON: a rising IN starts timing; Q = 1 once ET reaches PT while IN stays 1; IN = 0 resets
     /// and stops (Table 8-20).
-    fn ton(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
+    fn ton(&mut self, now: CpuTime<D::Unit>, input: IecInput<D>, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if !input.input {
             rec.write(RuleSet::of(Rule::TON_IN_01), Q | ET);
@@ -235,7 +256,7 @@ impl<C: ClockWord> IecTimerRef<C> {
 
     /// TOF: Q = 1 while IN = 1; a falling IN starts timing, Q falls when ET reaches PT; IN = 1
     /// resets and stops (Table 8-20).
-    fn tof(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
+    fn tof(&mut self, now: CpuTime<D::Unit>, input: IecInput<D>, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if input.input {
             rec.write(RuleSet::of(Rule::TOF_IN_01), Q | ET);
@@ -252,7 +273,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// TONR: R resets ET and Q (TONR-R-01, before anything else); while IN = 1 the timer
     /// accumulates, resuming from the accumulated ET with the PT of the moment it resumes
     /// (TONR-RESUME-01); IN = 0 stops without reset (Table 8-20); Q stays 1 after expiry until R.
-    fn tonr(&mut self, now: CpuTime, input: IecInput, rec: &mut impl Recorder) {
+    fn tonr(&mut self, now: CpuTime<D::Unit>, input: IecInput<D>, rec: &mut impl Recorder) {
         let pt = Some(input.pt);
         if input.reset {
             rec.write(RuleSet::of(Rule::TONR_R_01), Q | ET);
@@ -282,8 +303,8 @@ impl<C: ClockWord> IecTimerRef<C> {
     fn call_rec(
         &mut self,
         kind: IecKind,
-        now: CpuTime,
-        input: IecInput,
+        now: CpuTime<D::Unit>,
+        input: IecInput<D>,
         rec: &mut impl Recorder,
     ) -> IecOutput<C> {
         match kind {
@@ -301,7 +322,7 @@ impl<C: ClockWord> IecTimerRef<C> {
         // PT <= 0 at the box is a preset like any other, not a reset: the outputs are what the
         // other rules give with PT = 0 (or with the latched PT of a running timer).
         rec.add(
-            RuleSet::EMPTY.with_if(input.pt.clamp_negative() == 0, Rule::IEC_PT0_01),
+            RuleSet::EMPTY.with_if(input.pt.units() == 0, Rule::IEC_PT0_01),
             Q | ET,
         );
         self.state.kind = Some(kind);
@@ -328,8 +349,8 @@ impl<C: ClockWord> IecTimerRef<C> {
     pub fn call_explained(
         &mut self,
         kind: IecKind,
-        now: CpuTime,
-        input: IecInput,
+        now: CpuTime<D::Unit>,
+        input: IecInput<D>,
     ) -> Explained<IecOutput<C>> {
         let mut rec = Explanation::default();
         let o = self.call_rec(kind, now, input, &mut rec);
@@ -388,8 +409,8 @@ impl<C: ClockWord> IecTimerRef<C> {
     pub fn reset_timer_then_call_explained(
         &mut self,
         kind: IecKind,
-        now: CpuTime,
-        input: IecInput,
+        now: CpuTime<D::Unit>,
+        input: IecInput<D>,
     ) -> Explained<IecOutput<C>> {
         let held = self.state.input;
         let coil = self.reset_timer_explained();
@@ -417,7 +438,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// assert_eq!(e.output.et, 50); // clamped to the new preset
     /// assert!(e.state.contains(Rule::IEC_PT_COIL_01) && e.outputs[1].contains(Rule::IEC_PT_COIL_01));
     /// ```
-    pub fn preset_timer_explained(&mut self, pt: Time) -> Explained<IecOutput<C>> {
+    pub fn preset_timer_explained(&mut self, pt: D) -> Explained<IecOutput<C>> {
         let mut rec = Explanation::default();
         let before = self.state;
         self.preset_timer(pt);
@@ -446,7 +467,7 @@ impl<C: ClockWord> IecTimerRef<C> {
     /// assert!(e.output.q); // expired in the read's update
     /// assert!(e.outputs[0].contains(Rule::IEC_ACCESS_01) && e.outputs[0].contains(Rule::IEC_EXPIRY_01));
     /// ```
-    pub fn read_explained(&mut self, now: CpuTime) -> Explained<IecOutput<C>> {
+    pub fn read_explained(&mut self, now: CpuTime<D::Unit>) -> Explained<IecOutput<C>> {
         let mut rec = Explanation::default();
         if let Some(kind) = self.state.kind {
             self.update(now, kind, None, &mut rec);
@@ -481,18 +502,18 @@ impl<C: ClockWord> IecTimerRef<C> {
     }
 }
 
-impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
-    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOps<C, D> for IecTimerRef<C, D> {
+    fn call(&mut self, kind: IecKind, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C> {
         self.call_rec(kind, now, input, &mut ())
     }
 
     /// IEC-ACCESS-01: reading Q through the structure updates the timer first.
-    fn read_q(&mut self, now: CpuTime) -> bool {
+    fn read_q(&mut self, now: CpuTime<D::Unit>) -> bool {
         self.access(now).q
     }
 
     /// IEC-ACCESS-01: reading ELAPSED through the structure updates the timer first.
-    fn read_et(&mut self, now: CpuTime) -> C {
+    fn read_et(&mut self, now: CpuTime<D::Unit>) -> C {
         self.access(now).et
     }
 
@@ -506,7 +527,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerRef<C> {
 
     /// IEC-PT-COIL-01: the preset member is loaded; a running timer uses it from its next update.
     /// ET is clamped to it so that ET <= PT holds.
-    fn preset_timer(&mut self, pt: Time) {
+    fn preset_timer(&mut self, pt: D) {
         self.state.pt = preset(pt);
         self.state.et = self.state.et.min(self.state.pt);
     }

@@ -4,7 +4,9 @@
 
 use super::{IecInput, IecKind, IecOutput, IecState, IecTimerOps};
 use crate::time::clock::ClockWord;
-use crate::time::{CpuTime, Time};
+use core::marker::PhantomData;
+
+use crate::time::{CpuTime, IecDuration, LTime, Time};
 
 /// Flag bits of the flag byte ([`IecTimerOf::flags`]).
 ///
@@ -72,7 +74,7 @@ const fn kind_of(code: u32) -> IecKind {
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C)]
-pub struct IecTimerOf<C = u32> {
+pub struct IecTimerOf<C = u32, D = Time> {
     start: C,
     pt: C,
     et: C,
@@ -81,9 +83,11 @@ pub struct IecTimerOf<C = u32> {
     /// Always 0: with the flag byte, the structure's last 32-bit word, which
     /// [`IecTimerOf::ton_array`] moves whole.
     zero: [u8; 3],
+    /// The data type of PT and ET (`TIME` or `LTIME`): their unit, in the type only.
+    unit: PhantomData<D>,
 }
 
-impl<C: ClockWord> IecTimerOf<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
     /// The flags, in a 32-bit word for the arithmetic (see `flag`).
     #[inline(always)]
     fn flags(&self) -> u32 {
@@ -107,7 +111,7 @@ impl<C: ClockWord> IecTimerOf<C> {
 
     /// The structure with these members, `flags` below 2^8, written as four whole words.
     #[inline(always)]
-    fn from_words(start: C, pt: C, et: C, flags: u32) -> IecTimerOf<C> {
+    fn from_words(start: C, pt: C, et: C, flags: u32) -> IecTimerOf<C, D> {
         let [flag_byte, a, b, c] = flags.to_le_bytes();
         IecTimerOf {
             start,
@@ -115,6 +119,7 @@ impl<C: ClockWord> IecTimerOf<C> {
             et,
             flag_byte,
             zero: [a, b, c],
+            unit: PhantomData,
         }
     }
 }
@@ -136,7 +141,26 @@ pub type IecTimer = IecTimerOf<u32>;
 // The manual's size, checked at compile time.
 const _: () = assert!(core::mem::size_of::<IecTimer>() == 16);
 
-impl<C: ClockWord> IecTimerOf<C> {
+/// The S7-1500 `IEC_LTIMER`: the same structure on the 64-bit nanosecond clock, `PT` and `ET`
+/// of data type `LTIME` (the instance types `TP_LTIME`, `TON_LTIME`, `TOF_LTIME`,
+/// `TONR_LTIME`): START, PT, ET (8 bytes each), the flag byte, padding to 32 bytes
+/// (LTIMER-STRUCT-01).
+///
+/// ```
+/// use plc_timers::iec::{IecInput, IecKind, IecLTimer, IecTimerOps};
+/// use plc_timers::time::CpuTime;
+/// let pt = plc_timers::ltime!("LT#1MS_500US");
+/// let mut t = IecLTimer::new();
+/// t.call(IecKind::Ton, CpuTime::from_nanos(0), IecInput::new(true, pt));
+/// let out = t.call(IecKind::Ton, CpuTime::from_nanos(1_500_000), IecInput::new(true, pt));
+/// assert_eq!((out.q, out.et), (true, 1_500_000));
+/// assert_eq!(core::mem::size_of::<IecLTimer>(), 32);
+/// ```
+pub type IecLTimer = IecTimerOf<u64, LTime>;
+
+const _: () = assert!(core::mem::size_of::<IecLTimer>() == 32);
+
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
     /// The initial structure (all zero).
     ///
     /// ```
@@ -144,13 +168,14 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// const T: IecTimerOf<u32> = IecTimerOf::new();
     /// assert_eq!(T.state(), Default::default());
     /// ```
-    pub const fn new() -> IecTimerOf<C> {
+    pub const fn new() -> IecTimerOf<C, D> {
         IecTimerOf {
             start: C::ZERO,
             pt: C::ZERO,
             et: C::ZERO,
             flag_byte: 0,
             zero: [0; 3],
+            unit: PhantomData,
         }
     }
 
@@ -163,7 +188,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// assert_eq!(IecTimer::from_state(expired).map(|t| t.state()), Some(expired));
     /// assert!(IecTimer::from_state(IecState { start: 3, ..expired }).is_none()); // START kept while stopped
     /// ```
-    pub fn from_state(state: IecState<C>) -> Option<IecTimerOf<C>> {
+    pub fn from_state(state: IecState<C>) -> Option<IecTimerOf<C, D>> {
         if !state.is_valid() {
             return None;
         }
@@ -238,6 +263,7 @@ impl IecTimer {
             et: word(8),
             flag_byte: bytes[12],
             zero: [bytes[13], bytes[14], bytes[15]],
+            unit: PhantomData,
         };
         let valid =
             t.zero == [0, 0, 0] && t.flags() & !flag::ALL == 0 && t.abstraction().is_valid();
@@ -245,7 +271,7 @@ impl IecTimer {
     }
 }
 
-impl<C: ClockWord> IecTimerOf<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
     /// The latched preset `PT` in milliseconds, as stored (no update).
     pub fn pt(&self) -> C {
         self.pt
@@ -297,7 +323,7 @@ fn bit(on: bool, mask: u32) -> u32 {
     u32::from(on) * mask
 }
 
-impl<C: ClockWord> IecTimerOf<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
     /// The reference's `start` followed by its `update` at the same instant, in closed form:
     /// START = now, the preset latched (negative as 0), ET = 0; the update then finds
     /// `elapsed = 0`, which reaches PT exactly when PT = 0: then the timer has expired at once
@@ -309,12 +335,12 @@ impl<C: ClockWord> IecTimerOf<C> {
     fn begin(
         &mut self,
         now: C,
-        pt: Time,
+        pt: D,
         flags: u32,
         q_running: bool,
         q_expired: bool,
     ) -> IecOutput<C> {
-        let pt = C::from_preset(pt.clamp_negative());
+        let pt = C::from_preset(pt.units());
         let runs = !reached(C::ZERO, pt);
         let q = if runs { q_running } else { q_expired };
         self.start = if runs { now } else { C::ZERO };
@@ -378,7 +404,7 @@ fn masked<C: ClockWord>(c: C, mask: u32) -> C {
     C::from_u64_wrapping(c.to_u64() & u64::from(mask))
 }
 
-impl<C: ClockWord> IecTimerOf<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
     /// The call `call(IecKind::Ton, now, input)` for a loop over an array of timers: no branch
     /// on IN, on its rising edge or on the timer's state, which differ from one timer to the
     /// next in such a loop (a branch on them is mispredicted about as often as they change:
@@ -402,7 +428,7 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// the bits they are in the flags: a running timer's go to 4 (still running) or 2
     /// (expired, Q = 1), which is `2 + 2 * not_reached`.
     #[inline]
-    pub fn ton_for_arrays(&mut self, now: CpuTime, input: IecInput) -> IecOutput<C> {
+    pub fn ton_for_arrays(&mut self, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C> {
         let now = now.clock::<C>();
         let lane = ton_lane(
             Lane {
@@ -447,10 +473,10 @@ impl<C: ClockWord> IecTimerOf<C> {
     /// assert_eq!((q, et), ([true, false], [100, 0]));
     /// ```
     pub fn ton_array<const N: usize>(
-        timers: &mut [IecTimerOf<C>; N],
-        now: CpuTime,
+        timers: &mut [IecTimerOf<C, D>; N],
+        now: CpuTime<D::Unit>,
         input: &[bool; N],
-        pt: &[Time; N],
+        pt: &[D; N],
         q: &mut [bool; N],
         et: &mut [C; N],
     ) {
@@ -479,7 +505,7 @@ struct Lane<C> {
 /// [`IecTimerOf::ton_for_arrays`] and [`IecTimerOf::ton_array`]; why it equals the reference
 /// is said at the first.
 #[inline(always)]
-fn ton_lane<C: ClockWord>(timer: Lane<C>, now: C, on: bool, pt_in: Time) -> Lane<C> {
+fn ton_lane<C: ClockWord, D: IecDuration>(timer: Lane<C>, now: C, on: bool, pt_in: D) -> Lane<C> {
     use core::hint::select_unpredictable as select;
     let kind_bits = flag::KIND_VALID | (code(IecKind::Ton) as u32) << flag::KIND_SHIFT;
     let f = timer.flags;
@@ -488,7 +514,7 @@ fn ton_lane<C: ClockWord>(timer: Lane<C>, now: C, on: bool, pt_in: Time) -> Lane
     // then finds elapsed = 0 (see above): selected, not branched to.
     let rise = on & !f & flag::IN != 0;
     let start = select(rise, now, timer.start);
-    let pt = select(rise, C::from_preset(pt_in.clamp_negative()), timer.pt);
+    let pt = select(rise, C::from_preset(pt_in.units()), timer.pt);
     let run = rise | (f & flag::RUNNING != 0);
     let elapsed = now.elapsed_since(start);
     let not_reached = !reached(elapsed, pt);
@@ -508,16 +534,16 @@ fn ton_lane<C: ClockWord>(timer: Lane<C>, now: C, on: bool, pt_in: Time) -> Lane
 }
 
 /// [`IecTimerOf::ton_array`] as a loop for [`crate::simd::run`].
-struct TonArray<'a, C, const N: usize> {
-    timers: &'a mut [IecTimerOf<C>; N],
+struct TonArray<'a, C, D, const N: usize> {
+    timers: &'a mut [IecTimerOf<C, D>; N],
     now: C,
     input: &'a [bool; N],
-    pt: &'a [Time; N],
+    pt: &'a [D; N],
     q: &'a mut [bool; N],
     et: &'a mut [C; N],
 }
 
-impl<C: ClockWord, const N: usize> crate::simd::Kernel for TonArray<'_, C, N> {
+impl<C: ClockWord, D: IecDuration, const N: usize> crate::simd::Kernel for TonArray<'_, C, D, N> {
     #[inline(always)]
     fn run(self) {
         let TonArray {
@@ -539,11 +565,11 @@ const LANES: usize = 16;
 /// `N % LANES` through the same code on a padded copy (the padding timers are new ones with
 /// IN = 0, whose results are dropped), so that every timer takes the one path.
 #[inline(always)]
-fn ton_array_lanes<C: ClockWord, const N: usize>(
-    timers: &mut [IecTimerOf<C>; N],
+fn ton_array_lanes<C: ClockWord, D: IecDuration, const N: usize>(
+    timers: &mut [IecTimerOf<C, D>; N],
     now: C,
     input: &[bool; N],
-    pt: &[Time; N],
+    pt: &[D; N],
     q: &mut [bool; N],
     et: &mut [C; N],
 ) {
@@ -563,7 +589,7 @@ fn ton_array_lanes<C: ClockWord, const N: usize>(
     if n > 0 {
         let mut timers = [IecTimerOf::new(); LANES];
         let mut input = [false; LANES];
-        let mut pt = [Time::ZERO; LANES];
+        let mut pt = [D::ZERO; LANES];
         let (mut q, mut et) = ([false; LANES], [C::ZERO; LANES]);
         timers[..n].copy_from_slice(timers_tail);
         input[..n].copy_from_slice(inputs_tail);
@@ -581,11 +607,11 @@ fn ton_array_lanes<C: ClockWord, const N: usize>(
 /// vectorize the stores. The members are moved into arrays of their own (structure of arrays,
 /// which the lane loop vectorizes), the lane run on each, and the results moved back.
 #[inline(always)]
-fn ton_group<C: ClockWord>(
-    timers: &mut [IecTimerOf<C>; LANES],
+fn ton_group<C: ClockWord, D: IecDuration>(
+    timers: &mut [IecTimerOf<C, D>; LANES],
     now: C,
     input: &[bool; LANES],
-    pt: &[Time; LANES],
+    pt: &[D; LANES],
     q: &mut [bool; LANES],
     et: &mut [C; LANES],
 ) {
@@ -610,7 +636,7 @@ fn ton_group<C: ClockWord>(
     }
 }
 
-impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
+impl<C: ClockWord, D: IecDuration> IecTimerOps<C, D> for IecTimerOf<C, D> {
     /// One box call: the reference's decisions, taken as branches on the inputs and on the
     /// timer's state (the reference's functions are named below), and per path only the
     /// members that path changes are written. A timer called once per scan takes the same
@@ -633,7 +659,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     /// reference does after every call. A stopped timer has START = 0 already
     /// ([`IecState::is_valid`], which every structure satisfies).
     #[inline(always)]
-    fn call(&mut self, kind: IecKind, now: CpuTime, input: IecInput) -> IecOutput<C> {
+    fn call(&mut self, kind: IecKind, now: CpuTime<D::Unit>, input: IecInput<D>) -> IecOutput<C> {
         let now = now.clock::<C>();
         let f = self.flags();
         let was_in = f & flag::IN != 0;
@@ -745,7 +771,7 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
                     // START` = the accumulated ET (exactly: START = now - ET modulo 2^BITS), so
                     // the timer has expired at once when ET reaches the new PT; else it runs
                     // on from ET (its Q is 0 already).
-                    let pt = C::from_preset(input.pt.clamp_negative());
+                    let pt = C::from_preset(input.pt.units());
                     self.pt = pt;
                     if reached(self.et, pt) {
                         self.et = pt;
@@ -766,13 +792,13 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
     }
 
     #[inline]
-    fn read_q(&mut self, now: CpuTime) -> bool {
+    fn read_q(&mut self, now: CpuTime<D::Unit>) -> bool {
         self.update_on_read(now.clock());
         self.flags() & flag::Q != 0
     }
 
     #[inline]
-    fn read_et(&mut self, now: CpuTime) -> C {
+    fn read_et(&mut self, now: CpuTime<D::Unit>) -> C {
         self.update_on_read(now.clock());
         self.et
     }
@@ -782,8 +808,8 @@ impl<C: ClockWord> IecTimerOps<C> for IecTimerOf<C> {
         self.set_flags(self.flags() & !flag::IN);
     }
 
-    fn preset_timer(&mut self, pt: Time) {
-        self.pt = C::from_preset(pt.clamp_negative());
+    fn preset_timer(&mut self, pt: D) {
+        self.pt = C::from_preset(pt.units());
         self.et = self.et.min(self.pt);
     }
 

@@ -314,3 +314,69 @@ pub const fn ticks_between(from: CpuTime, to: CpuTime, base: TimeBase) -> u64 {
     let b = base.millis() as u64;
     (to.as_millis() / b).saturating_sub(from.as_millis() / b)
 }
+
+/// The S5 timers as one [`Family`](crate::block::Family) of the block interface: `S`, `R`,
+/// `FR` and `TV` in; `Q`, `BI` and `BCD` out; the millisecond clock.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct S5Timers;
+
+impl crate::block::Family for S5Timers {
+    type Kind = S5Kind;
+    type Input = S5Input;
+    type Output = S5Output;
+    type State = S5State;
+    type Preset = S5Time;
+    type PresetError = crate::time::LiteralError;
+    type Unit = crate::time::Millis;
+
+    fn kind(block: crate::catalog::Block) -> Option<S5Kind> {
+        match block.kind() {
+            crate::catalog::Kind::S5Timer(k) => Some(k),
+            _ => None,
+        }
+    }
+
+    #[inline]
+    fn input(signals: crate::block::Signals, tv: S5Time) -> S5Input {
+        use crate::catalog::Port;
+        S5Input::new(signals.get(Port::S), signals.get(Port::R), tv).with_fr(signals.get(Port::Fr))
+    }
+
+    #[inline]
+    fn values(_: S5Kind, o: &S5Output) -> crate::block::Outputs {
+        use crate::block::{Outputs, Value};
+        Outputs::three(
+            Value::Bool(o.q),
+            Value::Int(i128::from(o.bi)),
+            Value::Word(o.bcd),
+        )
+    }
+
+    fn parse_preset(text: &str) -> Result<S5Time, crate::time::LiteralError> {
+        S5Time::parse(text.trim())
+    }
+
+    fn preset_units(tv: S5Time) -> i128 {
+        i128::from(tv.units())
+    }
+
+    fn ramp(o: &S5Output) -> Option<u64> {
+        // The time base is in bits 13-12 of the BCD output (the word's own layout).
+        Some(u64::from(
+            crate::time::TimeBase::from_bits((o.bcd >> 12 & 3) as u8).millis(),
+        ))
+    }
+}
+
+crate::block::block_ops! {
+    impl[] S5TimerRef: S5Timers,
+    call: |t, kind, now, input| S5TimerOps::call(t, kind, now, input),
+    state: S5TimerOps::state,
+    explains: |t, kind, now, input| t.call_explained(kind, now, input),
+}
+
+crate::block::block_ops! {
+    impl[] S5Timer: S5Timers,
+    call: |t, kind, now, input| S5TimerOps::call(t, kind, now, input),
+    state: S5TimerOps::state,
+}

@@ -9,31 +9,79 @@
 //! at 8 bits, and the code is the same generic code).
 
 use core::fmt::Debug;
+use core::marker::PhantomData;
 
-/// A reading of the CPU's millisecond clock: milliseconds since the CPU started, as one 64-bit
-/// count that does not wrap in practice (585 million years).
+use super::unit::{Millis, Nanos, TimeUnit};
+
+/// A reading of the CPU's clock in units `U`: units since the CPU started, as one 64-bit count
+/// that does not wrap in practice (585 million years in ms, 584 years in ns).
 ///
 /// Every timer API takes the time it runs at as a `CpuTime`, so no block reads a clock and every
-/// behaviour is replayable. The S5 timers count the ticks of their time base on it (whole
-/// multiples of the base); the IEC timers see its low 32 bits, the wrapping S7-1200 clock
-/// ([`CpuTime::clock`]).
+/// behaviour is replayable. `CpuTime` alone is `CpuTime<Millis>`: the S5 timers count the ticks
+/// of their time base on it (whole multiples of the base), the IEC `TIME` timers see its low 32
+/// bits, the wrapping S7-1200 clock ([`CpuTime::clock`]). The S7-1500 long timers (`LTIME`) run
+/// on a `CpuTime<Nanos>`: the unit is in the type, so a clock of one unit cannot drive a timer
+/// of the other.
 ///
 /// ```
-/// use plc_timers::time::CpuTime;
+/// use plc_timers::time::{CpuTime, Nanos};
 /// let t = CpuTime::from_millis((1 << 32) + 5);
 /// assert_eq!(t.clock::<u32>(), 5); // the 32-bit CPU clock has wrapped once
 /// assert!(CpuTime::from_millis(10) < t);
+/// let n: CpuTime<Nanos> = CpuTime::from_nanos(7);
+/// assert_eq!(n.ticks(), 7);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-#[cfg_attr(kani, derive(kani::Arbitrary))]
-#[cfg_attr(feature = "bolero", derive(bolero_generator::TypeGenerator))]
 #[repr(transparent)]
-pub struct CpuTime(u64);
+pub struct CpuTime<U = Millis>(u64, PhantomData<U>);
 
-impl CpuTime {
-    /// The CPU's start: 0 ms.
-    pub const ZERO: CpuTime = CpuTime(0);
+#[cfg(kani)]
+impl<U: TimeUnit> kani::Arbitrary for CpuTime<U> {
+    fn any() -> CpuTime<U> {
+        CpuTime::from_ticks(kani::any())
+    }
+}
 
+/// Any time (feature `bolero`).
+#[cfg(feature = "bolero")]
+impl<U: TimeUnit> bolero_generator::TypeGenerator for CpuTime<U> {
+    fn generate<D: bolero_generator::Driver>(driver: &mut D) -> Option<CpuTime<U>> {
+        Some(CpuTime::from_ticks(driver.produce()?))
+    }
+}
+
+impl<U: TimeUnit> CpuTime<U> {
+    /// The CPU's start: 0.
+    pub const ZERO: CpuTime<U> = CpuTime(0, PhantomData);
+
+    /// The time `ticks` units after the CPU's start.
+    ///
+    /// ```
+    /// use plc_timers::time::{CpuTime, Millis};
+    /// assert_eq!(CpuTime::<Millis>::from_ticks(3), CpuTime::from_millis(3));
+    /// ```
+    pub const fn from_ticks(ticks: u64) -> CpuTime<U> {
+        CpuTime(ticks, PhantomData)
+    }
+
+    /// Units since the CPU's start.
+    pub const fn ticks(self) -> u64 {
+        self.0
+    }
+
+    /// `ticks` units later, saturating at the largest time.
+    #[must_use]
+    pub const fn add_ticks(self, ticks: u64) -> CpuTime<U> {
+        CpuTime(self.0.saturating_add(ticks), PhantomData)
+    }
+
+    /// This time as a clock word of type `C` shows it: its low `C::BITS` bits.
+    pub fn clock<C: ClockWord>(self) -> C {
+        C::from_u64_wrapping(self.0)
+    }
+}
+
+impl CpuTime<Millis> {
     /// The time `millis` milliseconds after the CPU's start.
     ///
     /// ```
@@ -41,7 +89,7 @@ impl CpuTime {
     /// assert_eq!(CpuTime::from_millis(1_500).as_millis(), 1_500);
     /// ```
     pub const fn from_millis(millis: u64) -> CpuTime {
-        CpuTime(millis)
+        CpuTime(millis, PhantomData)
     }
 
     /// Milliseconds since the CPU's start.
@@ -52,18 +100,25 @@ impl CpuTime {
     /// `millis` later, saturating at the largest time.
     #[must_use]
     pub const fn add_millis(self, millis: u64) -> CpuTime {
-        CpuTime(self.0.saturating_add(millis))
+        self.add_ticks(millis)
+    }
+}
+
+impl CpuTime<Nanos> {
+    /// The time `nanos` nanoseconds after the CPU's start.
+    pub const fn from_nanos(nanos: u64) -> CpuTime<Nanos> {
+        CpuTime(nanos, PhantomData)
     }
 
-    /// This time as a clock word of type `C` shows it: its low `C::BITS` bits.
-    pub fn clock<C: ClockWord>(self) -> C {
-        C::from_u64_wrapping(self.0)
+    /// Nanoseconds since the CPU's start.
+    pub const fn as_nanos(self) -> u64 {
+        self.0
     }
 }
 
 impl From<u64> for CpuTime {
     fn from(millis: u64) -> CpuTime {
-        CpuTime(millis)
+        CpuTime::from_millis(millis)
     }
 }
 
@@ -92,9 +147,10 @@ pub trait ClockWord: Copy + Eq + Ord + Debug + Default {
     fn from_u64_wrapping(t_ms: u64) -> Self;
     /// The value as an unsigned 64-bit number.
     fn to_u64(self) -> u64;
-    /// A non-negative preset in milliseconds, saturated at [`ClockWord::MAX`] (for the narrow
-    /// clocks of the proofs; on the 32-bit clock every non-negative `TIME` fits).
-    fn from_preset(millis: u32) -> Self;
+    /// A non-negative preset in clock units, saturated at [`ClockWord::MAX`] (for the narrow
+    /// clocks of the proofs; on the 32-bit clock every non-negative `TIME` fits, on the 64-bit
+    /// clock every non-negative `LTIME`).
+    fn from_preset(units: u64) -> Self;
 }
 
 macro_rules! clock_word {
@@ -122,8 +178,8 @@ macro_rules! clock_word {
                 u64::from(self)
             }
             #[inline]
-            fn from_preset(millis: u32) -> Self {
-                <$t>::try_from(millis).unwrap_or(<$t>::MAX)
+            fn from_preset(units: u64) -> Self {
+                <$t>::try_from(units).unwrap_or(<$t>::MAX)
             }
         }
     };
@@ -132,3 +188,4 @@ macro_rules! clock_word {
 clock_word!(u8);
 clock_word!(u16);
 clock_word!(u32);
+clock_word!(u64);

@@ -4,7 +4,8 @@
 //!   (LAD manual §9.1; Berger §7); literals `S5T#…`, `S5TIME#…`, `W#16#…`.
 //! - [`Time`]: signed 32-bit milliseconds with `T#…` literals (S7-1200 manual, TIME data type).
 //! - [`LTime`]: signed 64-bit nanoseconds with `LT#…` literals (S7-1500, LTIME data type).
-//! - [`CpuTime`]: the CPU's millisecond clock, the one time argument every timer takes;
+//! - [`CpuTime`]: the CPU's clock, the one time argument every timer takes, its unit in its
+//!   type ([`unit`]: [`Millis`], [`Nanos`]);
 //!   [`clock::ClockWord`]: the wrapping clock word the IEC timers compute with.
 //! - [`LiteralError`]: what was wrong with a literal, and where.
 //!
@@ -25,6 +26,7 @@ mod iec_time;
 mod literal;
 mod ltime;
 mod s5time;
+pub mod unit;
 
 pub(crate) use bcd::BCD3_TABLE;
 pub use bcd::{bcd3_decode, bcd3_encode};
@@ -34,6 +36,7 @@ pub(crate) use literal::has_prefix_ci;
 pub use literal::{LiteralError, LiteralErrorKind, LiteralType, Unit};
 pub use ltime::LTime;
 pub use s5time::{S5Time, S5TimeError, TimeBase};
+pub use unit::{IecDuration, Millis, Nanos, TimeUnit};
 
 /// An [`S5Time`] constant from a literal, checked at compile time: a malformed literal, a BCD
 /// digit above 9 or a value above 9 990 s does not compile.

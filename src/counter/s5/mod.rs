@@ -254,3 +254,69 @@ pub trait S5CounterOps {
     /// The state, as the reference names it.
     fn state(&self) -> S5CounterState;
 }
+
+/// The S5 counters as one [`Family`](crate::block::Family) of the block interface: `CU`,
+/// `CD`, `S`, `R`, `FR` and `PV` in; `Q`, `CV` and `CV_BCD` out.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct S5Counters;
+
+impl crate::block::Family for S5Counters {
+    type Kind = S5CounterKind;
+    type Input = S5CounterInput;
+    type Output = S5CounterOutput;
+    type State = S5CounterState;
+    type Preset = CounterPreset;
+    type PresetError = CounterPresetError;
+    type Unit = crate::time::Millis;
+
+    fn kind(block: crate::catalog::Block) -> Option<S5CounterKind> {
+        match block.kind() {
+            crate::catalog::Kind::S5Counter(k) => Some(k),
+            _ => None,
+        }
+    }
+
+    #[inline]
+    fn input(signals: crate::block::Signals, pv: CounterPreset) -> S5CounterInput {
+        use crate::catalog::Port;
+        S5CounterInput::new(signals.get(Port::Cu), signals.get(Port::Cd), pv)
+            .with_s(signals.get(Port::S))
+            .with_r(signals.get(Port::R))
+            .with_fr(signals.get(Port::Fr))
+    }
+
+    #[inline]
+    fn values(_: S5CounterKind, o: &S5CounterOutput) -> crate::block::Outputs {
+        use crate::block::{Outputs, Value};
+        Outputs::three(
+            Value::Bool(o.q),
+            Value::Int(i128::from(o.cv)),
+            Value::Word(o.cv_bcd),
+        )
+    }
+
+    fn parse_preset(text: &str) -> Result<CounterPreset, CounterPresetError> {
+        CounterPreset::parse(text)
+    }
+
+    fn preset_units(pv: CounterPreset) -> i128 {
+        i128::from(pv.value())
+    }
+
+    fn ramp(_: &S5CounterOutput) -> Option<u64> {
+        None
+    }
+}
+
+crate::block::block_ops! {
+    impl[] S5CounterRef: S5Counters,
+    call: |c, kind, _now, input| S5CounterOps::call(c, kind, input),
+    state: S5CounterOps::state,
+    explains: |c, kind, _now, input| c.call_explained(kind, input),
+}
+
+crate::block::block_ops! {
+    impl[] S5Counter: S5Counters,
+    call: |c, kind, _now, input| S5CounterOps::call(c, kind, input),
+    state: S5CounterOps::state,
+}

@@ -160,3 +160,15 @@ impl core::str::FromStr for CounterPreset {
         CounterPreset::parse(text)
     }
 }
+
+impl fmt::Display for CounterPreset {
+    /// The literal `C#n`.
+    ///
+    /// ```
+    /// use plc_timers::counter::s5::CounterPreset;
+    /// assert_eq!(CounterPreset::new(5).map(|c| c.to_string()).as_deref(), Ok("C#5"));
+    /// ```
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "C#{}", self.value())
+    }
+}
