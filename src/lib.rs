@@ -10,19 +10,25 @@
 //!
 //! ## Map
 //! Every family has the same shape: a kind enum, input and output structs, a state struct that
-//! both implementations map to, an interface trait, the reference, the optimized form, and a
-//! container of many.
+//! both implementations map to, the reference, the optimized form, and a container of many.
+//! Each family describes itself once as a [`block::Family`], and both of its implementations
+//! are [`block::BlockOps`]: the one interface the command-line tool, the bindings, the
+//! benchmarks and the proofs' shared drivers are written against ([`block::Instruction::visit`]
+//! is the only place that lists the families).
 //!
-//! | family | interface | reference | optimized | many |
+//! | family | [`block::Family`] | reference | optimized | many |
 //! |---|---|---|---|---|
-//! | [`s5`] timers (`S_PULSE` … `S_OFFDT`) | [`s5::S5TimerOps`] | [`s5::S5TimerRef`] | [`s5::S5Timer`] | [`s5::TimerMemory`] |
-//! | [`iec`] timers (`TP`, `TON`, `TOF`, `TONR`) | [`iec::IecTimerOps`] | [`iec::IecTimerRef`] | [`iec::IecTimer`] | [`iec::TonBank`] |
-//! | [`counter`]s (`CTU`, `CTD`, `CTUD`) | [`counter::CounterOps`] | [`counter::CounterRef`] | [`counter::Counter`] | [`counter::CounterBank`] |
-//! | [`counter::s5`] counters (`S_CU`, `S_CD`, `S_CUD`) | [`counter::s5::S5CounterOps`] | [`counter::s5::S5CounterRef`] | [`counter::s5::S5Counter`] | [`counter::s5::CounterMemory`] |
+//! | [`s5`] timers (`S_PULSE` … `S_OFFDT`) | [`s5::S5Timers`] | [`s5::S5TimerRef`] | [`s5::S5Timer`] | [`s5::TimerMemory`] |
+//! | [`iec`] timers (`TP`, `TON`, `TOF`, `TONR`) on `TIME` | [`iec::IecTimers`] | [`iec::IecTimerRef`] | [`iec::IecTimer`] | [`iec::TonBank`] |
+//! | [`iec`] timers on `LTIME` (S7-1500) | [`iec::IecTimers`]`<u64, LTime>` | [`iec::IecLTimerRef`] | [`iec::IecLTimer`] | |
+//! | [`counter`]s (`CTU`, `CTD`, `CTUD`) | [`counter::Counters`] | [`counter::CounterRef`] | [`counter::Counter`] | [`counter::CounterBank`] |
+//! | [`counter::s5`] counters (`S_CU`, `S_CD`, `S_CUD`) | [`counter::s5::S5Counters`] | [`counter::s5::S5CounterRef`] | [`counter::s5::S5Counter`] | [`counter::s5::CounterMemory`] |
 //!
-//! Every timer call takes the CPU time it runs at, a [`time::CpuTime`]: `call(kind, now, input)`;
-//! every counter call `call(kind, input)`. [`mod@time`] has the S5TIME word and IEC `TIME` with their
-//! literals; [`catalog`] names every block with its inputs and outputs.
+//! Every call takes the CPU time it runs at, a [`time::CpuTime`] whose unit is in its type
+//! (milliseconds, or nanoseconds for `LTIME`): `call(kind, now, input)`; a counter ignores it
+//! (its own `call(kind, input)` has none). [`mod@time`] has the S5TIME word, IEC `TIME` and
+//! `LTIME` with their literals; [`catalog`] names every block with its inputs, outputs and
+//! data types.
 //!
 //! ## Quick start, per family
 //!
@@ -36,12 +42,17 @@
 //! sd.call(S5Kind::SOdt, CpuTime::from_millis(0), on);
 //! assert!(sd.call(S5Kind::SOdt, CpuTime::from_millis(50), on).q);
 //!
-//! // IEC timers: a TON of 500 ms.
+//! // IEC timers: a TON of 500 ms; on LTIME (S7-1500), one of 1.5 ms in nanoseconds.
 //! use plc_timers::iec::{IecInput, IecKind, IecTimer, IecTimerOps};
 //! let mut ton = IecTimer::new();
 //! let on = IecInput::new(true, plc_timers::time!("T#500MS"));
 //! ton.call(IecKind::Ton, CpuTime::from_millis(1_000), on);
 //! assert!(ton.call(IecKind::Ton, CpuTime::from_millis(1_500), on).q);
+//! use plc_timers::iec::IecLTimer;
+//! let mut lton = IecLTimer::new();
+//! let on = IecInput::new(true, plc_timers::ltime!("LT#1MS_500US"));
+//! lton.call(IecKind::Ton, CpuTime::from_nanos(0), on);
+//! assert!(lton.call(IecKind::Ton, CpuTime::from_nanos(1_500_000), on).q);
 //!
 //! // IEC counters: a CTU of type INT counting to 2.
 //! use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
