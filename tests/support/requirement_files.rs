@@ -7,7 +7,7 @@ use std::fs;
 /// The families whose order is fixed (the order of the `Rule` enum and of `spec/matrix.md`),
 /// with the title the matrix gives each.
 pub const FAMILIES: [(&str, &str); 5] = [
-    ("time", "Time formats (S5TIME, TIME)"),
+    ("time", "Time formats (S5TIME, TIME, LTIME)"),
     ("s5", "S5 timers"),
     ("iec", "IEC timers"),
     ("counter", "Counters"),
