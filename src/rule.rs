@@ -28,8 +28,9 @@ mod table;
 
 pub use table::Rule;
 
-// The set is one `u128`: the catalog must stay within 128 requirements (or the set grows).
-const _: () = assert!(Rule::COUNT <= 128, "RuleSet holds at most 128 rules");
+/// The words of a [`RuleSet`]: one bit per rule of the catalog, sized from it (the generated
+/// `Rule::COUNT`), so a catalog that grows grows the set instead of overflowing it.
+const WORDS: usize = Rule::COUNT.div_ceil(64);
 
 impl Rule {
     /// The rule with ID `id`, if the catalog has it.
@@ -51,6 +52,13 @@ impl fmt::Display for Rule {
     }
 }
 
+/// The word and the bit of `rule`.
+#[inline(always)]
+const fn place(rule: Rule) -> (usize, u64) {
+    let i = rule as usize;
+    (i / 64, 1 << (i % 64))
+}
+
 /// A set of [`Rule`]s: one bit per rule, `Copy`, no allocation; iteration is in catalog order.
 ///
 /// ```
@@ -65,33 +73,41 @@ impl fmt::Display for Rule {
 /// assert_eq!(both.iter().collect::<RuleSet>(), both);
 /// ```
 #[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
-pub struct RuleSet(u128);
+pub struct RuleSet([u64; WORDS]);
 
 impl RuleSet {
     /// No rule.
-    pub const EMPTY: RuleSet = RuleSet(0);
+    pub const EMPTY: RuleSet = RuleSet([0; WORDS]);
 
     /// The set of `rule` alone.
+    #[inline]
     pub const fn of(rule: Rule) -> RuleSet {
-        RuleSet(1 << rule as u8)
+        RuleSet::EMPTY.with(rule)
     }
 
     /// Whether `rule` is in the set.
+    #[inline]
     pub const fn contains(self, rule: Rule) -> bool {
-        self.0 & (1 << rule as u8) != 0
+        let (w, bit) = place(rule);
+        self.0[w] & bit != 0
     }
 
     /// Adds `rule`.
+    #[inline]
     pub const fn insert(&mut self, rule: Rule) {
-        self.0 |= 1 << rule as u8;
+        let (w, bit) = place(rule);
+        self.0[w] |= bit;
     }
 
     /// The set with `rule` added.
-    pub const fn with(self, rule: Rule) -> RuleSet {
-        RuleSet(self.0 | 1 << rule as u8)
+    #[inline]
+    pub const fn with(mut self, rule: Rule) -> RuleSet {
+        self.insert(rule);
+        self
     }
 
     /// The set with `rule` added when `cond` holds.
+    #[inline]
     pub const fn with_if(self, cond: bool, rule: Rule) -> RuleSet {
         if cond {
             self.with(rule)
@@ -100,34 +116,69 @@ impl RuleSet {
         }
     }
 
+    /// The word-wise union of two sets, or with `union` false the difference (a `while` loop:
+    /// iterators are not `const`).
+    #[inline(always)]
+    const fn zip(self, other: RuleSet, union: bool) -> RuleSet {
+        let mut out = [0; WORDS];
+        let mut i = 0;
+        while i < WORDS {
+            out[i] = if union {
+                self.0[i] | other.0[i]
+            } else {
+                self.0[i] & !other.0[i]
+            };
+            i += 1;
+        }
+        RuleSet(out)
+    }
+
     /// The rules in either set.
+    #[inline]
     pub const fn union(self, other: RuleSet) -> RuleSet {
-        RuleSet(self.0 | other.0)
+        self.zip(other, true)
     }
 
     /// The rules of `self` not in `other`.
+    #[inline]
     pub const fn difference(self, other: RuleSet) -> RuleSet {
-        RuleSet(self.0 & !other.0)
+        self.zip(other, false)
     }
 
     /// Whether every rule of `self` is in `other`.
+    #[inline]
     pub const fn is_subset(self, other: RuleSet) -> bool {
-        self.0 & !other.0 == 0
+        self.difference(other).is_empty()
     }
 
     /// Whether the set is empty.
+    #[inline]
     pub const fn is_empty(self) -> bool {
-        self.0 == 0
+        let mut any = 0;
+        let mut i = 0;
+        while i < WORDS {
+            any |= self.0[i];
+            i += 1;
+        }
+        any == 0
     }
 
     /// The number of rules.
+    #[inline]
     pub const fn len(self) -> usize {
-        self.0.count_ones() as usize
+        let mut n = 0;
+        let mut i = 0;
+        while i < WORDS {
+            n += self.0[i].count_ones() as usize;
+            i += 1;
+        }
+        n
     }
 
     /// The rules, in catalog order.
+    #[inline]
     pub const fn iter(self) -> RuleSetIter {
-        RuleSetIter(self.0)
+        RuleSetIter(self)
     }
 }
 
@@ -139,23 +190,23 @@ impl RuleSet {
 /// assert_eq!((it.next(), it.next(), it.next()), (Some(Rule::S5T_WORD_01), Some(Rule::SC_SET_01), None));
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct RuleSetIter(u128);
+pub struct RuleSetIter(RuleSet);
 
 impl Iterator for RuleSetIter {
     type Item = Rule;
 
     fn next(&mut self) -> Option<Rule> {
-        if self.0 == 0 {
-            return None;
-        }
-        let i = self.0.trailing_zeros() as usize;
-        self.0 &= self.0 - 1;
+        // The lowest set bit of the first non-empty word is the next rule in catalog order.
+        let w = self.0 .0.iter().position(|&word| word != 0)?;
+        let word = &mut self.0 .0[w];
+        let i = w * 64 + word.trailing_zeros() as usize;
+        *word &= *word - 1;
         // Only bits of rules are ever set, so the index is in range.
         Rule::ALL.get(i).copied()
     }
 
     fn size_hint(&self) -> (usize, Option<usize>) {
-        let n = self.0.count_ones() as usize;
+        let n = self.0.len();
         (n, Some(n))
     }
 }

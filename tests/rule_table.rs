@@ -1,5 +1,7 @@
 //! The `Rule` enum of the library (`src/rule/table.rs`) is the one `spec/requirements/*.toml`
-//! generates: one variant per requirement, with its ID and rule text. The library has no build
+//! generates: one variant per requirement of the core (the time formats and the blocks: every file but a front end's,
+//! `requirement_files::FRONT_ENDS`: the CLI's requirements name its tests, not a rule a block
+//! applies, so they are checked by `spec_catalog.rs` only), with its ID and rule text. The library has no build
 //! script and no dependency, so the generated file is committed and this test fails when it is
 //! stale.
 //!
@@ -14,8 +16,9 @@ use serde::Deserialize;
 /// The generated file, relative to the package root.
 const TABLE: &str = "src/rule/table.rs";
 
-/// The catalog files, in the order of the enum: every file of `spec/requirements/`, the known
-/// families first (time, S5 timers, IEC timers, counters, CLI), then any other by name.
+/// The catalog files, in the order of the enum: every file of `spec/requirements/` but the front
+/// ends', the known families first (time, S5 timers, IEC timers, counters), then any other by
+/// name.
 #[path = "support/requirement_files.rs"]
 mod requirement_files;
 
@@ -52,7 +55,7 @@ fn doc_text(text: &str) -> String {
 /// The text of `src/rule/table.rs` for the catalog as it is.
 fn generate() -> String {
     let mut rules: Vec<(String, Requirement)> = Vec::new();
-    for stem in requirement_files::stems() {
+    for stem in requirement_files::core_stems() {
         let path = format!("spec/requirements/{stem}.toml");
         let text = fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
         let catalog: Catalog = toml::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
@@ -72,10 +75,11 @@ fn generate() -> String {
     );
     let _ = writeln!(
         s,
-        "/// Every requirement of the catalog (`spec/requirements/*.toml`), in catalog order: the \
-         time\n/// formats, S5 timers, IEC timers, counters, then the command line. A variant is \
-         named by its ID\n/// (`-` written `_`); [`Rule::id`] gives the ID and [`Rule::text`] the \
-         rule as the catalog states it.\n///\n/// ```\n/// use plc_timers::rule::Rule;\n\
+        "/// Every requirement of the core (`spec/requirements/*.toml` but the command line's, whose \
+         rules\n/// name the CLI's tests), in catalog order: the time formats, S5 timers, IEC \
+         timers, counters,\n/// then any other family by name. A variant is named by its ID \
+         (`-` written `_`); [`Rule::id`]\n/// gives the ID and [`Rule::text`] the rule as the \
+         catalog states it.\n///\n/// ```\n/// use plc_timers::rule::Rule;\n\
          /// assert_eq!(Rule::IEC_PT0_01.id(), \"IEC-PT0-01\");\n\
          /// assert_eq!(Rule::from_id(\"IEC-PT0-01\"), Some(Rule::IEC_PT0_01));\n\
          /// assert!(Rule::IEC_EXPIRY_01.text().contains(\"ET >= PT\"));\n/// ```"
@@ -144,7 +148,7 @@ fn every_requirement_has_its_rule() {
         return; // the library under test was built from the table before blessing
     }
     let mut count = 0;
-    for stem in requirement_files::stems() {
+    for stem in requirement_files::core_stems() {
         let path = format!("spec/requirements/{stem}.toml");
         let text = fs::read_to_string(&path).expect("catalog file");
         let catalog: Catalog = toml::from_str(&text).expect("catalog");
@@ -162,4 +166,37 @@ fn every_requirement_has_its_rule() {
         Rule::COUNT,
         "{TABLE} has rules the catalog no longer has"
     );
+}
+
+/// The front ends' requirements are not the core's: no `Rule` has their IDs, and every other
+/// file of the catalog is in `Rule` (a new family's file cannot be left out silently).
+#[test]
+fn front_end_requirements_stay_out_of_the_core() {
+    use plc_timers::rule::Rule;
+    if std::env::var_os("PLC_TIMERS_BLESS").is_some() {
+        return; // the library under test was built from the table before blessing
+    }
+    let core = requirement_files::core_stems();
+    for stem in requirement_files::stems() {
+        let path = format!("spec/requirements/{stem}.toml");
+        let text = fs::read_to_string(&path).expect("catalog file");
+        let catalog: Catalog = toml::from_str(&text).expect("catalog");
+        let front_end = requirement_files::FRONT_ENDS.contains(&stem.as_str());
+        assert_eq!(
+            core.contains(&stem),
+            !front_end,
+            "{stem}: in the core iff no front end"
+        );
+        if front_end {
+            assert!(!catalog.requirement.is_empty(), "{path}: no requirement");
+            for r in &catalog.requirement {
+                assert_eq!(
+                    Rule::from_id(&r.id),
+                    None,
+                    "{}: a front end's rule in Rule",
+                    r.id
+                );
+            }
+        }
+    }
 }
