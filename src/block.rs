@@ -195,7 +195,10 @@ pub trait Family {
 }
 
 /// One implementation (reference or optimized) of a [`Family`]: what every front end calls.
-pub trait BlockOps: Default {
+///
+/// An instance is plain data (`Copy`, `Send`, `'static`), so a front end may keep the one
+/// [`Instruction::visit`] hands it behind a single object of its own.
+pub trait BlockOps: Default + Copy + Debug + Send + Sync + 'static {
     /// The family described once.
     type Family: Family<
         Kind = Self::Kind,

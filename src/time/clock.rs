@@ -130,7 +130,7 @@ impl From<u64> for CpuTime {
 /// assert_eq!(5u8.elapsed_since(241), 20);
 /// assert_eq!(u32::from_preset(7), 7);
 /// ```
-pub trait ClockWord: Copy + Eq + Ord + Debug + Default {
+pub trait ClockWord: Copy + Eq + Ord + Debug + Default + Send + Sync + 'static {
     /// The width in bits.
     const BITS: u32;
     /// Zero.
