@@ -11,9 +11,9 @@ use clap::error::ErrorKind;
 use clap::{Arg, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueEnum};
 use plc_timers::catalog::Block;
 use plc_timers::time::{LTime, S5Time, Time};
-use plc_timers_cli::trace::diagram::{self, Window};
-use plc_timers_cli::trace::family::block_names;
-use plc_timers_cli::trace::{
+use plc_timers_trace::diagram::{self, Window};
+use plc_timers_trace::family::block_names;
+use plc_timers_trace::{
     check, parse_block, run, run_explained, vcd, vectors, BlockSpec, Error, Implementation,
     IntType, Location, PresetValue, TraceError,
 };

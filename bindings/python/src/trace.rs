@@ -1,6 +1,6 @@
 //! `run` and `check` over rows in memory. The rows are written as the CSV text the command line
-//! reads (header = line 1, one line per row) and handed to the engine of the `plc-timers`
-//! command (`plc_timers_cli::trace::{run, check}`): Python and the command line run one engine,
+//! reads (header = line 1, one line per row) and handed to the trace engine of the `plc-timers`
+//! command (`plc_timers_trace::{run, check}`): Python and the command line run one engine,
 //! so they agree by construction, and a better explanation in the engine reaches Python
 //! unchanged.
 
@@ -8,10 +8,9 @@ use std::io::Cursor;
 
 use plc_timers::catalog::{Block, Kind, PresetKind, ValueKind};
 use plc_timers::rule::RuleSet;
-use plc_timers_cli::trace::engine::parse_value;
-use plc_timers_cli::trace::error::show;
-use plc_timers_cli::trace::{
-    self as engine, BlockSpec, Error, Implementation, Location, PresetValue, Value,
+use plc_timers_trace::{
+    self as engine, parse_value, show, BlockSpec, Error, Implementation, Location, PresetValue,
+    Value,
 };
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
