@@ -66,7 +66,7 @@ fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
         }
     }
     let spec = BlockSpec::parse(block, int_type).map_err(|e| format!("{stem}.csv: {e}"))?;
-    let option = spec.block.preset().option;
+    let option = super::engine::preset_option(spec.block);
     let preset = match preset_text {
         Some((o, _)) if o != option => {
             return Err(format!(

@@ -28,8 +28,8 @@ pub mod vcd;
 pub mod vectors;
 
 pub use engine::{
-    check, observe, parse_value, run, run_explained, CheckReport, Columns, ContextRow, Difference,
-    Observation, Observer, Why,
+    check, observe, parse_value, preset_option, run, run_explained, CheckReport, Columns,
+    ContextRow, Difference, Observation, Observer, Why,
 };
 pub use error::{show, Error, Location, TraceError};
 pub use family::{

@@ -9,8 +9,8 @@ use std::io::Cursor;
 use plc_timers::catalog::{Block, Kind, PresetKind, ValueKind};
 use plc_timers::rule::RuleSet;
 use plc_timers_trace::{
-    self as engine, parse_value, show, BlockSpec, Error, Implementation, Location, PresetValue,
-    Value,
+    self as engine, parse_value, preset_option, show, BlockSpec, Error, Implementation, Location,
+    PresetValue, Value,
 };
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
@@ -407,7 +407,7 @@ fn preset_value(
 ) -> PyResult<PresetValue> {
     let block = spec.block;
     let preset = block.preset();
-    if name != preset.option {
+    if name != preset_option(block) {
         return Err(engine_error(
             py,
             engine::TraceError::new(
@@ -416,7 +416,7 @@ fn preset_value(
                     "the keyword argument {name} does not apply to {block}; its preset {} is \
                      the keyword argument {}",
                     preset.port.name(),
-                    preset.option
+                    preset_option(block)
                 ),
             ),
         ));
@@ -438,7 +438,7 @@ fn preset_value(
         engine_error(
             py,
             engine::TraceError::new(
-                Location::Option(preset.option),
+                Location::Option(preset_option(block)),
                 format!("`{}`: {e}", show(text.as_bytes())),
             ),
         )
