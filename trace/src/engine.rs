@@ -246,6 +246,17 @@ pub fn parse_u64(cell: &[u8]) -> Option<u64> {
 
 /// Parses an output cell of another implementation as a value of `kind`: a boolean as
 /// [`parse_bool`], an integer in decimal, a word as `W#16#` and 1 to 4 hex digits or decimal.
+/// `None` is a cell that is no such value; the caller names its line and column.
+///
+/// ```
+/// use plc_timers::catalog::ValueKind;
+/// use plc_timers_trace::{parse_value, Value};
+///
+/// assert_eq!(parse_value(ValueKind::Bool, b"TRUE"), Some(Value::Bool(true)));
+/// assert_eq!(parse_value(ValueKind::Int, b"-7"), Some(Value::Int(-7)));
+/// assert_eq!(parse_value(ValueKind::Word, b"W#16#0123"), Some(Value::Word(0x0123)));
+/// assert_eq!(parse_value(ValueKind::Bool, b"2"), None);
+/// ```
 #[inline(always)]
 pub fn parse_value(kind: ValueKind, cell: &[u8]) -> Option<Value> {
     match kind {
