@@ -11,7 +11,7 @@
 //! assert_eq!(names, ["S", "R", "FR", "TV"]);
 //! assert_eq!(sd.outputs()[2], Port::Bcd);
 //! assert_eq!(sd.outputs()[2].kind(), ValueKind::Word);
-//! assert_eq!((sd.preset().port, sd.preset().option), (Port::Tv, "tv"));
+//! assert_eq!(sd.preset().port, Port::Tv);
 //! ```
 
 use crate::counter::s5::S5CounterKind;
@@ -147,19 +147,17 @@ ports! {
     CvBcd = "CV_BCD", Word, "`CV_BCD`: the S5 counters' count in BCD.";
 }
 
-/// A preset input and how the command line may give it for every row.
+/// A preset input and the kind of value it takes.
 ///
 /// ```
 /// use plc_timers::catalog::{Block, Port, PresetKind};
 /// let pt = Block::Tp.preset();
-/// assert_eq!((pt.port, pt.option, pt.kind), (Port::Pt, "pt", PresetKind::Time));
+/// assert_eq!((pt.port, pt.kind), (Port::Pt, PresetKind::Time));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Preset {
     /// The input (`TV`, `PT`, `PV`).
     pub port: Port,
-    /// The command-line option without dashes (`tv`, `pt`, `pv`).
-    pub option: &'static str,
     /// What it is.
     pub kind: PresetKind,
 }
@@ -360,15 +358,15 @@ impl Block {
         }
     }
 
-    /// The preset input and its command-line option (every block has one).
+    /// The preset input and its kind (every block has one).
     pub const fn preset(self) -> Preset {
-        let (port, option, kind) = match self.family() {
-            Family::S5Timer => (Tv, "tv", PresetKind::S5Time),
-            Family::IecTimer => (Pt, "pt", PresetKind::Time),
-            Family::IecCounter => (Pv, "pv", PresetKind::Integer),
-            Family::S5Counter => (Pv, "pv", PresetKind::S5Count),
+        let (port, kind) = match self.family() {
+            Family::S5Timer => (Tv, PresetKind::S5Time),
+            Family::IecTimer => (Pt, PresetKind::Time),
+            Family::IecCounter => (Pv, PresetKind::Integer),
+            Family::S5Counter => (Pv, PresetKind::S5Count),
         };
-        Preset { port, option, kind }
+        Preset { port, kind }
     }
 
     /// The data types the block runs on: S5TIME for the S5 timers, TIME and LTIME for the IEC

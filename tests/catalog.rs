@@ -136,12 +136,6 @@ fn every_block_is_its_box() {
             "{}: preset",
             b.name
         );
-        assert_eq!(
-            preset.option,
-            b.preset.0.to_ascii_lowercase(),
-            "{}: option",
-            b.name
-        );
         assert_eq!(block.requires_time(), b.timer, "{}: needs t_ms", b.name);
         assert_eq!(block.family().is_timer(), b.timer, "{}: family", b.name);
         for port in Port::ALL {

@@ -61,21 +61,29 @@ fn definition(text: &str, function: &str) -> Option<usize> {
     })
 }
 
+/// Where tests live: the core's, the trace engine's and the command's.
+const TEST_DIRS: &[&str] = &[
+    "tests/",
+    "proofs/",
+    "src/",
+    "trace/tests/",
+    "trace/src/",
+    "cli/tests/",
+    "cli/src/",
+];
+
 /// Whether `file::function` names a function defined in that file; with `test`, also that the
-/// file is under tests/, proofs/, src/, cli/tests/ or cli/src/ and the function carries `#[test]` (among the attribute
+/// file is under one of [`TEST_DIRS`] and the function carries `#[test]` (among the attribute
 /// and doc-comment lines right above it, which also covers functions inside `proptest!`) or is
 /// defined in a `quickcheck!` block.
 fn exists(reference: &str, test: bool) -> Result<(), String> {
     let (file, function) = reference
         .split_once("::")
         .ok_or(format!("`{reference}` is not file::function"))?;
-    if test
-        && !["tests/", "proofs/", "src/", "cli/tests/", "cli/src/"]
-            .iter()
-            .any(|d| file.starts_with(d))
-    {
+    if test && !TEST_DIRS.iter().any(|d| file.starts_with(d)) {
         return Err(format!(
-            "`{reference}`: tests live in tests/, proofs/, src/, cli/tests/ or cli/src/"
+            "`{reference}`: tests live in {}",
+            TEST_DIRS.join(", ")
         ));
     }
     let text = fs::read_to_string(Path::new(file)).map_err(|e| format!("{file}: {e}"))?;
@@ -209,7 +217,7 @@ fn matrix(catalogs: &[(String, String, Catalog)]) -> String {
 /// Whether a requirement is behavioural: every requirement of the core's families (every file
 /// but a front end's, so a new family's file is checked too) except the pure equivalence ones
 /// (`*-EQUIV-*`), which keep their equivalence properties. A front end's assertions (the CLI's)
-/// live in its own tests, which its engineer maintains.
+/// live in its own tests (`trace/tests/`, `cli/tests/`), which its engineer maintains.
 fn behavioural(family: &str, id: &str) -> bool {
     !requirement_files::FRONT_ENDS.contains(&family) && !id.contains("-EQUIV-")
 }
@@ -449,7 +457,7 @@ fn checker_rejects_bad_entries() {
     for expected in [
         "duplicate ID",
         "`fn exists` in tests/spec_catalog.rs is not a #[test]",
-        "tests live in tests/, proofs/, src/, cli/tests/ or cli/src/",
+        "`README.md::anything`: tests live in tests/, proofs/, src/, trace/tests/",
     ] {
         assert!(
             errors.iter().any(|e| e.contains(expected)),

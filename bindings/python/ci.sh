@@ -45,7 +45,7 @@ for f in ("LICENSE-MIT", "LICENSE-APACHE"):
 [sdist] = wheels.glob("*.tar.gz")
 members = {m.split("/", 1)[1] for m in tarfile.open(sdist).getnames() if "/" in m}
 needed = ["Cargo.toml", "Cargo.lock", "LICENSE-MIT", "LICENSE-APACHE", "src/lib.rs",
-          "cli/Cargo.toml", "bindings/python/Cargo.toml", "pyproject.toml",
+          "trace/Cargo.toml", "bindings/python/Cargo.toml", "pyproject.toml",
           "bindings/python/plc_timers.pyi", "bindings/python/src/lib.rs"]
 missing = [f for f in needed if f not in members]
 assert not missing, f"the sdist lacks {missing}"

@@ -11,11 +11,11 @@ use clap::error::ErrorKind;
 use clap::{Arg, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueEnum};
 use plc_timers::catalog::Block;
 use plc_timers::time::{LTime, S5Time, Time};
-use plc_timers_cli::trace::diagram::{self, Window};
-use plc_timers_cli::trace::family::block_names;
-use plc_timers_cli::trace::{
-    check, parse_block, run, run_explained, vcd, vectors, BlockSpec, Error, Implementation,
-    IntType, Location, PresetValue, TraceError,
+use plc_timers_trace::diagram::{self, Window};
+use plc_timers_trace::family::block_names;
+use plc_timers_trace::{
+    check, parse_block, preset_option, run, run_explained, vcd, vectors, BlockSpec, Error,
+    Implementation, IntType, Location, PresetValue, TraceError,
 };
 
 /// Exit status: the check found a difference.
@@ -137,10 +137,10 @@ struct PresetArg(Option<PresetValue>);
 fn preset_options() -> Vec<(&'static str, &'static str, Vec<&'static str>)> {
     let mut options: Vec<(&'static str, &'static str, Vec<&'static str>)> = Vec::new();
     for block in Block::ALL {
-        let p = block.preset();
-        match options.iter_mut().find(|o| o.0 == p.option) {
+        let option = preset_option(block);
+        match options.iter_mut().find(|o| o.0 == option) {
             Some(o) => o.2.push(block.name()),
-            None => options.push((p.option, p.port.name(), vec![block.name()])),
+            None => options.push((option, block.preset().port.name(), vec![block.name()])),
         }
     }
     options
@@ -166,14 +166,14 @@ impl FromArgMatches for PresetArg {
             let Some(text) = m.get_one::<String>(option) else {
                 continue;
             };
-            if option != preset.option {
+            if option != preset_option(block) {
                 return Err(refuse(
                     ErrorKind::ArgumentConflict,
                     format!(
                         "option --{option} does not apply to {block}; its preset {} is given \
                          with --{}",
                         preset.port.name(),
-                        preset.option
+                        preset_option(block)
                     ),
                 ));
             }

@@ -4,7 +4,7 @@ mod common;
 
 use common::{plc, text};
 use plc_timers::catalog::Block;
-use plc_timers_cli::trace::examples;
+use plc_timers_trace::examples;
 use std::process::Output;
 
 fn stdout(o: &Output) -> String {
@@ -432,7 +432,7 @@ fn vectors_command() {
     assert!(stdout(&o).starts_with("wrote "));
     assert!(dir.join("README.txt").is_file());
     // Each vector's own check command replays it.
-    let all = plc_timers_cli::trace::vectors::all().expect("vectors");
+    let all = plc_timers_trace::vectors::all().expect("vectors");
     for v in all
         .iter()
         .filter(|v| v.file == "limits.csv" || v.file == "fr.csv")

@@ -3,7 +3,7 @@
 
 mod common;
 
-use plc_timers_cli::trace::examples;
+use plc_timers_trace::examples;
 
 /// CLI-DOC-01: every `console` block of README.md and spec/cli.md gives exactly the output
 /// shown. (`TRYCMD=overwrite cargo test -p plc-timers-cli --test readme` rewrites them.)

@@ -6,7 +6,7 @@
 use libfuzzer_sys::fuzz_target;
 use plc_timers::catalog::Block;
 use plc_timers::rule::Rule;
-use plc_timers_cli::trace::{check, BlockSpec};
+use plc_timers_trace::{check, BlockSpec};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&selector, csv)) = data.split_first() else {

@@ -5,7 +5,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use plc_timers::catalog::{Block, PresetKind};
-use plc_timers_cli::trace::{check, run, BlockSpec, Error, Implementation, PresetValue};
+use plc_timers_trace::{check, run, BlockSpec, Error, Implementation, PresetValue};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&selector, csv)) = data.split_first() else {

@@ -10,7 +10,7 @@ use numpy::{Element, PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayM
 use plc_timers::counter::{BankInputs, CounterBank, CounterInt, CounterState};
 use plc_timers::iec::{IecState, TonBank};
 use plc_timers::time::{CpuTime, Time};
-use plc_timers_cli::trace::IntType;
+use plc_timers_trace::IntType;
 use pyo3::exceptions::{PyImportError, PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple, PyType};

@@ -16,7 +16,7 @@ use plc_timers::counter::{
 use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
-use plc_timers_cli::trace::IntType;
+use plc_timers_trace::{preset_option, IntType};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
@@ -246,7 +246,7 @@ fn preset<T: Copy>(
     default: Option<T>,
     read: impl FnOnce(&Bound<'_, PyAny>, &str) -> PyResult<T>,
 ) -> PyResult<T> {
-    let name = block.preset().option;
+    let name = preset_option(block);
     match (given, default) {
         (Some(obj), _) => read(obj, name),
         (None, Some(v)) => Ok(v),

@@ -6,7 +6,7 @@
 //! - [`memory`]: the S5 timer and counter memory areas with their STL operations.
 //! - [`literals`]: `S5Time`, `Time` and `CounterPreset` with their parsers.
 //! - [`trace`]: `run` and `check` over rows in memory, through the engine of the `plc-timers`
-//!   command (`plc_timers_cli::trace`), so that Python and the command line agree by
+//!   command (`plc_timers_trace`), so that Python and the command line agree by
 //!   construction.
 //! - [`banks`]: `TonBank` and `CounterBank` over numpy arrays, one call per scan.
 //!

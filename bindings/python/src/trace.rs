@@ -1,6 +1,6 @@
 //! `run` and `check` over rows in memory. The rows are written as the CSV text the command line
-//! reads (header = line 1, one line per row) and handed to the engine of the `plc-timers`
-//! command (`plc_timers_cli::trace::{run, check}`): Python and the command line run one engine,
+//! reads (header = line 1, one line per row) and handed to the trace engine of the `plc-timers`
+//! command (`plc_timers_trace::{run, check}`): Python and the command line run one engine,
 //! so they agree by construction, and a better explanation in the engine reaches Python
 //! unchanged.
 
@@ -8,10 +8,9 @@ use std::io::Cursor;
 
 use plc_timers::catalog::{Block, Kind, PresetKind, ValueKind};
 use plc_timers::rule::RuleSet;
-use plc_timers_cli::trace::engine::parse_value;
-use plc_timers_cli::trace::error::show;
-use plc_timers_cli::trace::{
-    self as engine, BlockSpec, Error, Implementation, Location, PresetValue, Value,
+use plc_timers_trace::{
+    self as engine, parse_value, preset_option, show, BlockSpec, Error, Implementation, Location,
+    PresetValue, Value,
 };
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
@@ -408,7 +407,7 @@ fn preset_value(
 ) -> PyResult<PresetValue> {
     let block = spec.block;
     let preset = block.preset();
-    if name != preset.option {
+    if name != preset_option(block) {
         return Err(engine_error(
             py,
             engine::TraceError::new(
@@ -417,7 +416,7 @@ fn preset_value(
                     "the keyword argument {name} does not apply to {block}; its preset {} is \
                      the keyword argument {}",
                     preset.port.name(),
-                    preset.option
+                    preset_option(block)
                 ),
             ),
         ));
@@ -439,7 +438,7 @@ fn preset_value(
         engine_error(
             py,
             engine::TraceError::new(
-                Location::Option(preset.option),
+                Location::Option(preset_option(block)),
                 format!("`{}`: {e}", show(text.as_bytes())),
             ),
         )

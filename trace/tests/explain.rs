@@ -8,7 +8,7 @@
 
 use plc_timers::catalog::Block;
 use plc_timers::rule::{Explained, Rule};
-use plc_timers_cli::trace::{check, run_explained, BlockSpec, Why};
+use plc_timers_trace::{check, run_explained, BlockSpec, Why};
 
 /// Checks `trace` against the reference of `block`, comparing `outputs` (all when `None`),
 /// and returns the explanation of the first difference, which must be at `line`.
@@ -189,7 +189,7 @@ fn rt_resets_elapsed_only() {
 /// The optimized implementation gives no rules, and `check` says so instead of naming any.
 #[test]
 fn optimized_check_names_no_rule() {
-    use plc_timers_cli::trace::Implementation;
+    use plc_timers_trace::Implementation;
     let trace = "t_ms,IN,PT,Q,ET\n0,1,T#100MS,0,0\n100,1,T#100MS,0,100\n";
     let spec = BlockSpec::new(Block::Ton).with(Implementation::Optimized);
     let d = check(spec, None, None, trace.as_bytes())

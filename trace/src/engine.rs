@@ -19,6 +19,32 @@ use plc_timers::rule::{RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
 /// The name of the time column.
 pub const TIME_COLUMN: &str = "t_ms";
 
+/// The option that gives `block`'s preset on the command line (without the dashes), also the
+/// Python keyword argument: the preset input's name lower-cased (`tv`, `pt`, `pv`).
+///
+/// ```
+/// use plc_timers::catalog::Block;
+/// assert_eq!(plc_timers_trace::preset_option(Block::SOdt), "tv");
+/// assert_eq!(plc_timers_trace::preset_option(Block::Ctud), "pv");
+/// ```
+pub fn preset_option(block: Block) -> &'static str {
+    // Lower-cased once per port, so that the name is `'static` like the port's own and a
+    // caller that asks per call allocates nothing.
+    static OPTIONS: std::sync::OnceLock<Vec<(Port, String)>> = std::sync::OnceLock::new();
+    let port = block.preset().port;
+    OPTIONS
+        .get_or_init(|| {
+            Port::ALL
+                .iter()
+                .map(|p| (*p, p.name().to_ascii_lowercase()))
+                .collect()
+        })
+        .iter()
+        .find(|(p, _)| *p == port)
+        .map(|(_, option)| option.as_str())
+        .expect("Port::ALL holds every port")
+}
+
 /// How many rows before a difference `check` shows.
 pub const CONTEXT_ROWS: usize = 3;
 
@@ -220,6 +246,17 @@ pub fn parse_u64(cell: &[u8]) -> Option<u64> {
 
 /// Parses an output cell of another implementation as a value of `kind`: a boolean as
 /// [`parse_bool`], an integer in decimal, a word as `W#16#` and 1 to 4 hex digits or decimal.
+/// `None` is a cell that is no such value; the caller names its line and column.
+///
+/// ```
+/// use plc_timers::catalog::ValueKind;
+/// use plc_timers_trace::{parse_value, Value};
+///
+/// assert_eq!(parse_value(ValueKind::Bool, b"TRUE"), Some(Value::Bool(true)));
+/// assert_eq!(parse_value(ValueKind::Int, b"-7"), Some(Value::Int(-7)));
+/// assert_eq!(parse_value(ValueKind::Word, b"W#16#0123"), Some(Value::Word(0x0123)));
+/// assert_eq!(parse_value(ValueKind::Bool, b"2"), None);
+/// ```
 #[inline(always)]
 pub fn parse_value(kind: ValueKind, cell: &[u8]) -> Option<Value> {
     match kind {
@@ -329,14 +366,14 @@ impl<F: Adapter> Engine<F> {
         let option = preset
             .map(|v| family.preset(v))
             .transpose()
-            .map_err(|e| TraceError::new(Location::Option(p.option), e))?;
+            .map_err(|e| TraceError::new(Location::Option(preset_option(block)), e))?;
         if let (None, None) = (layout.preset, option) {
             return Err(TraceError::new(
                 Location::Line(layout.line),
                 format!(
                     "{block} needs its preset: a `{}` column or the option --{}",
                     p.port.name(),
-                    p.option
+                    preset_option(block)
                 ),
             ));
         }
@@ -1049,6 +1086,21 @@ fn observe_family<F: Adapter, R: Read>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// CLI-RUN-01 (spec/cli.md, "Blocks"): the preset options are `--tv` for the S5 timers,
+    /// `--pt` for the IEC timers and `--pv` for both kinds of counter.
+    #[test]
+    fn preset_options_as_the_contract_names_them() {
+        use plc_timers::catalog::Family;
+        for block in Block::ALL {
+            let expected = match block.family() {
+                Family::S5Timer => "tv",
+                Family::IecTimer => "pt",
+                Family::IecCounter | Family::S5Counter => "pv",
+            };
+            assert_eq!(preset_option(block), expected, "CLI-RUN-01: {block}");
+        }
+    }
 
     #[test]
     fn cell_parsers() {

@@ -1,4 +1,4 @@
-//! The example traces of `examples/traces/`, embedded when the tool is built. The first line of
+//! The example traces of `examples/traces/`, embedded when the engine is built. The first line of
 //! each is the command that runs it, exactly as the README writes it
 //! (`# cargo run --release -- run TON --pt T#500ms examples/traces/ton.csv`); the block, its
 //! preset and the file are read from that line, so the examples name their own settings.
@@ -66,7 +66,7 @@ fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
         }
     }
     let spec = BlockSpec::parse(block, int_type).map_err(|e| format!("{stem}.csv: {e}"))?;
-    let option = spec.block.preset().option;
+    let option = super::engine::preset_option(spec.block);
     let preset = match preset_text {
         Some((o, _)) if o != option => {
             return Err(format!(

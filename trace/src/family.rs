@@ -87,7 +87,7 @@ impl Outputs {
 ///
 /// ```
 /// use plc_timers::catalog::Port;
-/// use plc_timers_cli::trace::Signals;
+/// use plc_timers_trace::Signals;
 /// let on = Signals::of(&[Port::Cu, Port::R]);
 /// assert!(on.get(Port::Cu) && on.get(Port::R) && !on.get(Port::Cd));
 /// ```

@@ -76,6 +76,15 @@ impl std::error::Error for TraceError {}
 
 /// A cell's text as a message shows it: invalid UTF-8 replaced by `\u{FFFD}`, control
 /// characters escaped, at most [`SHOWN_CHARS`] characters and then `…`.
+///
+/// ```
+/// use plc_timers_trace::error::SHOWN_CHARS;
+/// use plc_timers_trace::show;
+///
+/// assert_eq!(show(b"T#5\xFFs"), "T#5\u{FFFD}s");
+/// let long = show("x".repeat(1_000).as_bytes());
+/// assert_eq!(long, format!("{}…", "x".repeat(SHOWN_CHARS)));
+/// ```
 pub fn show(bytes: &[u8]) -> String {
     // Never decode more than a small prefix: a 10 MB cell must not make a 10 MB message. A
     // character takes at most 4 bytes (and the lossy decoding turns a cut one into one

@@ -2,8 +2,8 @@
 //! totality on arbitrary bytes (reference and optimized agree on every trace both accept).
 
 use plc_timers::catalog::{Block, PresetKind};
-use plc_timers_cli::trace::diagram::{self, Window};
-use plc_timers_cli::trace::{
+use plc_timers_trace::diagram::{self, Window};
+use plc_timers_trace::{
     check, run, vcd, BlockSpec, Error, Implementation, Location, PresetValue, TraceError,
 };
 use proptest::prelude::*;

@@ -1,15 +1,22 @@
 //! The timing diagrams: `docs/` holds the ones the renderer draws from `examples/traces/` now
-//! (`UPDATE_DOCS=1 cargo test -p plc-timers-cli --test docs` redraws them); a 2 M-row trace is
+//! (`UPDATE_DOCS=1 cargo test -p plc-timers-trace --test docs` redraws them); a 2 M-row trace is
 //! drawn in bounded memory into a small SVG with no edge lost; `--from/--to` zoom; VCD export
 //! parses back with the `vcd` crate.
 
-mod common;
-
 use std::fs;
+use std::path::{Path, PathBuf};
 
 use plc_timers::catalog::{Block, ValueKind};
-use plc_timers_cli::trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
-use plc_timers_cli::trace::{engine, examples, vcd, BlockSpec, PresetValue};
+use plc_timers_trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
+use plc_timers_trace::{engine, examples, vcd, BlockSpec, PresetValue};
+
+/// The repository's root, where `docs/` is.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("trace/ is inside the repository")
+        .to_path_buf()
+}
 
 fn draw(
     spec: BlockSpec,
@@ -54,7 +61,7 @@ fn docs_diagrams_are_current() {
         assert_eq!(svg.matches("class=\"value-axis\"").count(), 1, "{}", e.stem);
         assert!(svg.matches("class=\"tick\"").count() >= 2, "{}", e.stem);
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
-        let path = common::root().join(format!("docs/{}.svg", e.stem));
+        let path = root().join(format!("docs/{}.svg", e.stem));
         if update {
             fs::write(&path, &svg).expect("write docs");
         }
@@ -64,7 +71,7 @@ fn docs_diagrams_are_current() {
     }
     assert!(
         stale.is_empty(),
-        "stale diagrams {stale:?}; redraw with `UPDATE_DOCS=1 cargo test -p plc-timers-cli --test docs`"
+        "stale diagrams {stale:?}; redraw with `UPDATE_DOCS=1 cargo test -p plc-timers-trace --test docs`"
     );
 }
 
@@ -314,7 +321,7 @@ fn window_zooms() {
 
 /// CLI-DIAG-02: drawings from buckets are pinned too: a 6 000-row TONR trace whose PT column
 /// changes (a ramp, a step line for the preset), whole and through a window, against
-/// `cli/tests/data/*.svg` (`UPDATE_DOCS=1` redraws them).
+/// `trace/tests/data/*.svg` (`UPDATE_DOCS=1` redraws them).
 #[test]
 fn bucket_drawings_are_current() {
     let mut trace = String::from("t_ms,IN,R,PT\n");
@@ -338,7 +345,7 @@ fn bucket_drawings_are_current() {
     ] {
         let (svg, stats) = draw(tonr, None, trace.as_bytes(), window);
         assert!(!stats.exact, "{name}");
-        let path = common::root().join(format!("cli/tests/data/{name}.svg"));
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/data/{name}.svg"));
         if update {
             fs::write(&path, &svg).expect("write");
         }

@@ -3,8 +3,8 @@
 //! output of the aimed vectors (each names requirements of the catalog).
 
 use plc_timers::catalog::ValueKind;
-use plc_timers_cli::trace::vectors::{self, Vector};
-use plc_timers_cli::trace::{check, Implementation};
+use plc_timers_trace::vectors::{self, Vector};
+use plc_timers_trace::{check, Implementation};
 use sha2::{Digest, Sha256};
 
 /// The SHA-256 of every vector's directory, file name and text, and the README, in order.
