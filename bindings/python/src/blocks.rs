@@ -4,6 +4,8 @@
 
 use std::marker::PhantomData;
 
+use plc_timers::block::Instruction;
+use plc_timers::catalog::DataType;
 use plc_timers::catalog::{Block, Kind, Port};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
@@ -13,11 +15,13 @@ use plc_timers::counter::{
     Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
     CounterState,
 };
-use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
-use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+use plc_timers::time::{
+    clock::ClockWord, CpuTime, IecDuration, LTime, S5Time, Time, TimeBase, TimeUnit,
+};
 use plc_timers_cli::trace::IntType;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
@@ -74,34 +78,29 @@ impl PyS5Output {
     }
 }
 
-/// The outputs of an IEC timer: Q and ET (ms).
+/// The outputs of an IEC timer: Q and ET (in the unit of its clock: ms for TIME, ns for
+/// LTIME).
 #[pyclass(module = "plc_timers", name = "IecOutput", frozen, eq, hash, get_all)]
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct PyIecOutput {
     /// Q.
     pub q: bool,
-    /// ET in milliseconds.
-    pub et: u32,
-}
-
-impl From<IecOutput<u32>> for PyIecOutput {
-    fn from(o: IecOutput<u32>) -> Self {
-        PyIecOutput { q: o.q, et: o.et }
-    }
+    /// ET in the clock's unit (ms for TIME, ns for LTIME).
+    pub et: u64,
 }
 
 #[pymethods]
 impl PyIecOutput {
-    /// The outputs Q and ET (ms) as given, e.g. to compare a call's result with: `out ==
-    /// IecOutput(q, et)`.
+    /// The outputs Q and ET (ms, or ns for LTIME) as given, e.g. to compare a call's result
+    /// with: `out == IecOutput(q, et)`.
     #[new]
     #[pyo3(signature = (q, et))]
-    fn new(q: bool, et: u32) -> Self {
+    fn new(q: bool, et: u64) -> Self {
         PyIecOutput { q, et }
     }
 
     /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u32) {
+    fn __getnewargs__(&self) -> (bool, u64) {
         (self.q, self.et)
     }
 
@@ -505,34 +504,223 @@ s5_timers! {
 // ---------------------------------------------------------------------------------------------
 // IEC timers
 
-/// An IEC timer of either implementation, copyable behind the interface.
-trait IecDyn: IecTimerOps<u32> + Send + Sync {
-    fn clone_box(&self) -> Box<dyn IecDyn>;
+/// A data type of the IEC timers as Python gives it: how a preset is read from a Python object.
+trait PyDuration: IecDuration<Clock: Send + Sync> {
+    /// Reads `obj` as this data type, or the error naming what is allowed.
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Self>;
 }
 
-impl<X: IecTimerOps<u32> + Copy + Send + Sync + 'static> IecDyn for X {
-    fn clone_box(&self) -> Box<dyn IecDyn> {
-        Box::new(*self)
+impl PyDuration for Time {
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
+        args::time(obj, what)
     }
 }
 
-/// The state pickle saves for an IEC timer: optimized, PT (ms), the last `now_ms`, then the
-/// [`IecState`]'s fields (the kind by name).
+impl PyDuration for LTime {
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<LTime> {
+        args::ltime(obj, what)
+    }
+}
+
+/// An IEC timer of either implementation and either data type (TIME, LTIME) behind one
+/// object-safe interface: times as whole units of its clock (ms for TIME, ns for LTIME), so
+/// that the Python class is written once.
+trait IecDyn: Send + Sync {
+    fn clone_box(&self) -> Box<dyn IecDyn>;
+    /// The unit of the clock and of PT and ET: `ms` or `ns`.
+    fn unit(&self) -> &'static str;
+    /// A preset read from Python, in units.
+    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64>;
+    /// A preset in units as its literal (`T#500MS`, `LT#1MS_500US`).
+    fn show(&self, pt: i64) -> String;
+    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput;
+    fn read_q(&mut self, now: u64) -> bool;
+    fn read_et(&mut self, now: u64) -> u64;
+    fn reset_timer(&mut self);
+    fn preset_timer(&mut self, pt: i64);
+    fn run_stop_run(&mut self, retentive: bool);
+    /// The state with the clock words widened to `u64`.
+    fn state(&self) -> IecState<u64>;
+    /// A timer of this implementation and data type in `state` (`None`: not a state it can be
+    /// in, or a word wider than its clock).
+    fn with_state(&self, state: IecState<u64>) -> Option<Box<dyn IecDyn>>;
+}
+
+/// The checking constructor from a state both implementations have.
+trait FromIecState<C>: Sized {
+    fn from_iec_state(state: IecState<C>) -> Option<Self>;
+}
+
+impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerRef<C, D> {
+    fn from_iec_state(state: IecState<C>) -> Option<Self> {
+        IecTimerRef::from_state(state)
+    }
+}
+
+impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerOf<C, D> {
+    fn from_iec_state(state: IecState<C>) -> Option<Self> {
+        IecTimerOf::from_state(state)
+    }
+}
+
+/// An IEC timer `X` on the data type `D`.
+struct TypedTimer<X, D>(X, PhantomData<fn() -> D>);
+
+impl<D: PyDuration, X> TypedTimer<X, D> {
+    /// A preset in units; `pt` was read for this data type, so it is in range.
+    fn duration(pt: i64) -> D {
+        D::from_units(i128::from(pt)).unwrap_or(D::ZERO)
+    }
+}
+
+/// A clock word from `u64`, `None` when it does not fit.
+fn word<C: ClockWord>(v: u64) -> Option<C> {
+    (v <= C::MAX.to_u64()).then(|| C::from_u64_wrapping(v))
+}
+
+impl<D: PyDuration, X> IecDyn for TypedTimer<X, D>
+where
+    X: IecTimerOps<D::Clock, D> + FromIecState<D::Clock> + Copy + Send + Sync + 'static,
+{
+    fn clone_box(&self) -> Box<dyn IecDyn> {
+        Box::new(TypedTimer::<X, D>(self.0, PhantomData))
+    }
+
+    fn unit(&self) -> &'static str {
+        <D::Unit as TimeUnit>::SYMBOL
+    }
+
+    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64> {
+        D::extract(obj, what).map(D::units_signed)
+    }
+
+    fn show(&self, pt: i64) -> String {
+        Self::duration(pt).to_string()
+    }
+
+    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput {
+        let input = IecInput::new(input, Self::duration(pt)).with_reset(reset);
+        let o = self.0.call(kind, CpuTime::from_ticks(now), input);
+        PyIecOutput {
+            q: o.q,
+            et: o.et.to_u64(),
+        }
+    }
+
+    fn read_q(&mut self, now: u64) -> bool {
+        self.0.read_q(CpuTime::from_ticks(now))
+    }
+
+    fn read_et(&mut self, now: u64) -> u64 {
+        self.0.read_et(CpuTime::from_ticks(now)).to_u64()
+    }
+
+    fn reset_timer(&mut self) {
+        self.0.reset_timer();
+    }
+
+    fn preset_timer(&mut self, pt: i64) {
+        self.0.preset_timer(Self::duration(pt));
+    }
+
+    fn run_stop_run(&mut self, retentive: bool) {
+        self.0.run_stop_run(retentive);
+    }
+
+    fn state(&self) -> IecState<u64> {
+        let s = self.0.state();
+        IecState {
+            kind: s.kind,
+            input: s.input,
+            running: s.running,
+            start: s.start.to_u64(),
+            pt: s.pt.to_u64(),
+            et: s.et.to_u64(),
+            q: s.q,
+        }
+    }
+
+    fn with_state(&self, s: IecState<u64>) -> Option<Box<dyn IecDyn>> {
+        let state = IecState {
+            kind: s.kind,
+            input: s.input,
+            running: s.running,
+            start: word(s.start)?,
+            pt: word(s.pt)?,
+            et: word(s.et)?,
+            q: s.q,
+        };
+        let timer = X::from_iec_state(state)?;
+        Some(Box::new(TypedTimer::<X, D>(timer, PhantomData)))
+    }
+}
+
+/// A new timer of implementation `optimized` on the data type `D`.
+fn typed_timer<D: PyDuration>(optimized: bool) -> Box<dyn IecDyn> {
+    if optimized {
+        Box::new(TypedTimer::<IecTimerOf<D::Clock, D>, D>(
+            IecTimerOf::default(),
+            PhantomData,
+        ))
+    } else {
+        Box::new(TypedTimer::<IecTimerRef<D::Clock, D>, D>(
+            IecTimerRef::default(),
+            PhantomData,
+        ))
+    }
+}
+
+/// A new timer of `instruction` (an IEC timer on TIME or LTIME).
+fn iec_timer(instruction: Instruction, optimized: bool) -> Box<dyn IecDyn> {
+    match instruction.data_type() {
+        DataType::LTime => typed_timer::<LTime>(optimized),
+        _ => typed_timer::<Time>(optimized),
+    }
+}
+
+/// The instruction `block` on the data type named `type_name` (ASCII case ignored), or a
+/// `ValueError` naming the data types the block takes.
+fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
+    let takes = || {
+        let names: Vec<&str> = block.data_types().iter().map(|t| t.name()).collect();
+        names.join(" ")
+    };
+    let data_type = DataType::lookup(type_name.trim()).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown data type `{type_name}`; {block} takes {}",
+            takes()
+        ))
+    })?;
+    Instruction::new(block, data_type).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The state pickle saves for an IEC timer: optimized, PT (in units of the clock), the last
+/// `now`, then the [`IecState`]'s fields (the kind by name). The data type is an argument of
+/// the class (`__reduce__`).
 type IecTimerPickle = (
     bool,
-    Option<i32>,
+    Option<i64>,
     Option<u64>,
-    (Option<String>, bool, bool, u32, u32, u32, bool),
+    (Option<String>, bool, bool, u64, u64, u64, bool),
 );
 
-/// An IEC timer of one kind, reference or optimized.
+/// The CPU time of an IEC timer's call as Python gave it: first (`given`), or by the keyword
+/// of its unit (`now_ms=`, `now_ns=`); exactly one, that of the block's clock.
+struct NowArg<'a, 'py> {
+    given: Option<&'a Bound<'py, PyAny>>,
+    ms: Option<&'a Bound<'py, PyAny>>,
+    ns: Option<&'a Bound<'py, PyAny>>,
+}
+
+/// An IEC timer of one kind and data type, reference or optimized.
 pub struct IecBlock {
     block: Block,
     kind: IecKind,
+    instruction: Instruction,
     timer: Box<dyn IecDyn>,
     optimized: bool,
-    pt: Option<Time>,
-    last: Option<CpuTime>,
+    pt: Option<i64>,
+    last: Option<u64>,
 }
 
 impl Clone for IecBlock {
@@ -545,21 +733,24 @@ impl Clone for IecBlock {
 }
 
 impl IecBlock {
-    fn new(block: Block, pt: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<IecBlock> {
+    fn new(
+        block: Block,
+        pt: Option<&Bound<'_, PyAny>>,
+        type_name: &str,
+        optimized: bool,
+    ) -> PyResult<IecBlock> {
         let Kind::IecTimer(kind) = block.kind() else {
             return Err(PyValueError::new_err(format!(
                 "{block} is not an IEC timer"
             )));
         };
-        let pt = pt.map(|t| args::time(t, "pt")).transpose()?;
-        let timer: Box<dyn IecDyn> = if optimized {
-            Box::new(IecTimer::new())
-        } else {
-            Box::new(IecTimerRef::<u32>::new())
-        };
+        let instruction = instruction(block, type_name)?;
+        let timer = iec_timer(instruction, optimized);
+        let pt = pt.map(|t| timer.preset(t, "pt")).transpose()?;
         Ok(IecBlock {
             block,
             kind,
+            instruction,
             timer,
             optimized,
             pt,
@@ -567,33 +758,55 @@ impl IecBlock {
         })
     }
 
-    fn at(&mut self, now: &Bound<'_, PyAny>) -> PyResult<CpuTime> {
-        let now = now_ms(now)?;
-        forward(now, self.last)?;
+    /// The CPU time of a call, given positionally (in the block's unit) or by the keyword of
+    /// the block's unit (`now_ms`, `now_ns`), not before the previous call's.
+    fn at(&mut self, now: NowArg<'_, '_>) -> PyResult<u64> {
+        let unit = self.timer.unit();
+        let keyword = format!("now_{unit}");
+        let given = match (now.given, now.ms, now.ns) {
+            (Some(t), None, None) => t,
+            (None, Some(t), None) if unit == "ms" => t,
+            (None, None, Some(t)) if unit == "ns" => t,
+            (None, None, None) => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} needs the CPU time: give it first or as {keyword}= (whole {unit})",
+                    self.instruction
+                )))
+            }
+            _ => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} runs on a clock in {unit}: give the CPU time once, first or as \
+                     {keyword}=",
+                    self.instruction
+                )))
+            }
+        };
+        let now = args::clock(given, unit)?;
+        args::forward_in(now, self.last, unit)?;
         self.last = Some(now);
         Ok(now)
     }
 
     fn call(
         &mut self,
-        now: &Bound<'_, PyAny>,
+        now: NowArg<'_, '_>,
         input: bool,
         r: bool,
         pt: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyIecOutput> {
         has_input(self.block, Port::R, r)?;
-        let pt = preset(self.block, pt, self.pt, args::time)?;
+        let timer = &self.timer;
+        let pt = preset(self.block, pt, self.pt, |o, what| timer.preset(o, what))?;
         let now = self.at(now)?;
-        let input = IecInput::new(input, pt).with_reset(r);
-        Ok(self.timer.call(self.kind, now, input).into())
+        Ok(self.timer.call(self.kind, now, input, r, pt))
     }
 
     fn getstate(&self) -> IecTimerPickle {
         let st = self.timer.state();
         (
             self.optimized,
-            self.pt.map(Time::as_millis),
-            self.last.map(CpuTime::as_millis),
+            self.pt,
+            self.last,
             (
                 st.kind.map(|k| k.name().to_string()),
                 st.input,
@@ -628,27 +841,43 @@ impl IecBlock {
             et,
             q,
         };
-        let timer: Box<dyn IecDyn> = if optimized {
-            Box::new(IecTimer::from_state(st).ok_or_else(bad)?)
-        } else {
-            Box::new(IecTimerRef::<u32>::from_state(st).ok_or_else(bad)?)
-        };
+        let timer = iec_timer(self.instruction, optimized)
+            .with_state(st)
+            .ok_or_else(bad)?;
+        // The preset must be one of the data type: read it back as the class would.
+        if let Some(v) = pt {
+            let back = timer.preset(&v.into_pyobject(state.py())?.into_any(), "pt");
+            if back.is_err() {
+                return Err(bad());
+            }
+        }
         *self = IecBlock {
             timer,
             optimized,
-            pt: pt.map(Time::from_millis),
-            last: last.map(CpuTime::from_millis),
+            pt,
+            last,
             ..*self
         };
         Ok(())
     }
 
+    /// The constructor's arguments for pickle: the preset is in the state, the data type here.
+    fn newargs(&self) -> (Option<i64>, &'static str) {
+        (None, self.instruction.data_type().name())
+    }
+
     fn repr(&self) -> String {
         let pt = self
             .pt
-            .map_or("None".to_string(), |t| format!("{:?}", t.to_string()));
+            .map_or("None".to_string(), |t| format!("{:?}", self.timer.show(t)));
+        let data_type = self.instruction.data_type();
+        let ty = if data_type == self.block.default_data_type() {
+            String::new()
+        } else {
+            format!(", type={:?}", data_type.name())
+        };
         format!(
-            "{}(pt={pt}, optimized={})",
+            "{}(pt={pt}{ty}, optimized={})",
             self.block,
             py_bool(self.optimized)
         )
@@ -659,42 +888,63 @@ macro_rules! iec_timers {
     ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
         #[doc = $doc]
         ///
-        /// `pt`: the preset, a literal (`"T#500ms"`), an int of milliseconds or a `Time`;
-        /// `call()` may give another. `optimized=True` drives the optimized 16-byte structure
-        /// instead of the reference.
+        /// `type`: the data type of PT and ET, `"TIME"` (default; the clock, PT and ET in
+        /// milliseconds, the 16-byte IEC_TIMER) or `"LTIME"` (S7-1500; in nanoseconds, the
+        /// 32-byte IEC_LTIMER). `pt`: the preset, a literal (`"T#500ms"`, or `"LT#1ms500us"`
+        /// for LTIME), an int in the clock's unit, a `Time` (TIME) or an `LTime` (LTIME);
+        /// `call()` may give another. `optimized=True` drives the optimized structure instead
+        /// of the reference.
         #[pyclass(module = "plc_timers", name = $name)]
         pub struct $cls(IecBlock);
 
         #[pymethods]
         impl $cls {
             #[new]
-            #[pyo3(signature = (pt = None, *, optimized = false))]
-            fn new(pt: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                IecBlock::new(Block::$block, pt, optimized).map($cls)
+            #[pyo3(signature = (pt = None, r#type = "TIME", *, optimized = false))]
+            fn new(pt: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
+                IecBlock::new(Block::$block, pt, r#type, optimized).map($cls)
             }
 
-            /// One call of the box at CPU time `now_ms` with IN (`in_`), R (TONR only) and PT
-            /// (this call's or the block's); returns Q and ET.
-            #[pyo3(signature = (now_ms, in_ = false, r = false, pt = None))]
+            /// One call of the box at CPU time `now` (whole ms for TIME, whole ns for LTIME;
+            /// by keyword `now_ms=` or `now_ns=`) with IN (`in_`), R (TONR only) and PT (this
+            /// call's or the block's); returns Q and ET (in the clock's unit).
+            #[pyo3(signature = (now = None, /, in_ = false, r = false, pt = None, *, now_ms = None, now_ns = None))]
+            #[allow(clippy::too_many_arguments)]
             fn call(
                 &mut self,
-                now_ms: &Bound<'_, PyAny>,
+                now: Option<&Bound<'_, PyAny>>,
                 in_: bool,
                 r: bool,
                 pt: Option<&Bound<'_, PyAny>>,
+                now_ms: Option<&Bound<'_, PyAny>>,
+                now_ns: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<PyIecOutput> {
-                self.0.call(now_ms, in_, r, pt)
+                self.0.call(NowArg { given: now, ms: now_ms, ns: now_ns }, in_, r, pt)
             }
 
-            /// Reads the structure's Q at `now_ms`: an update happens first (IEC-ACCESS-01).
-            fn read_q(&mut self, now_ms: &Bound<'_, PyAny>) -> PyResult<bool> {
-                let now = self.0.at(now_ms)?;
+            /// Reads the structure's Q at `now` (the clock's unit): an update happens first
+            /// (IEC-ACCESS-01).
+            #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+            fn read_q(
+                &mut self,
+                now: Option<&Bound<'_, PyAny>>,
+                now_ms: Option<&Bound<'_, PyAny>>,
+                now_ns: Option<&Bound<'_, PyAny>>,
+            ) -> PyResult<bool> {
+                let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
                 Ok(self.0.timer.read_q(now))
             }
 
-            /// Reads the structure's ET at `now_ms`: an update happens first (IEC-ACCESS-01).
-            fn read_et(&mut self, now_ms: &Bound<'_, PyAny>) -> PyResult<u32> {
-                let now = self.0.at(now_ms)?;
+            /// Reads the structure's ET at `now` (the clock's unit): an update happens first
+            /// (IEC-ACCESS-01).
+            #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+            fn read_et(
+                &mut self,
+                now: Option<&Bound<'_, PyAny>>,
+                now_ms: Option<&Bound<'_, PyAny>>,
+                now_ns: Option<&Bound<'_, PyAny>>,
+            ) -> PyResult<u64> {
+                let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
                 Ok(self.0.timer.read_et(now))
             }
 
@@ -703,9 +953,10 @@ macro_rules! iec_timers {
                 self.0.timer.reset_timer();
             }
 
-            /// The `-(PT)-` coil with power flow: loads `pt` into the structure's preset.
+            /// The `-(PT)-` coil with power flow: loads `pt` (of the block's data type) into
+            /// the structure's preset.
             fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
-                let pt = args::time(pt, "pt")?;
+                let pt = self.0.timer.preset(pt, "pt")?;
                 self.0.timer.preset_timer(pt);
                 Ok(())
             }
@@ -714,6 +965,12 @@ macro_rules! iec_timers {
             /// values; a retentive one keeps its data.
             fn run_stop_run(&mut self, retentive: bool) {
                 self.0.timer.run_stop_run(retentive);
+            }
+
+            /// The data type's name (`TIME`, `LTIME`).
+            #[getter]
+            fn r#type(&self) -> &'static str {
+                self.0.instruction.data_type().name()
             }
 
             /// Whether this is the optimized implementation.
@@ -732,13 +989,14 @@ macro_rules! iec_timers {
                 $cls(self.0.clone())
             }
 
-            /// For pickle: the class with its defaults, then the state (preset,
+            /// For pickle: the class with its data type, then the state (preset,
             /// implementation, the core's state, the last time).
             fn __reduce__<'py>(
                 slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
+            ) -> PyResult<(Bound<'py, PyType>, (Option<i64>, &'static str), Bound<'py, PyAny>)> {
+                let this = slf.borrow();
+                let state = this.0.getstate().into_pyobject(slf.py())?.into_any();
+                Ok((slf.get_type(), this.0.newargs(), state))
             }
 
             /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
@@ -766,7 +1024,10 @@ iec_timers! {
          IecOutput(q=True, et=500)\n\
          >>> t.reset_timer()  # the RT coil\n\
          >>> t.read_q(1600)\n\
-         False";
+         False\n\
+         >>> lt = TON(pt=\"LT#1ms500us\", type=\"LTIME\")  # S7-1500: nanoseconds\n\
+         >>> lt.call(0, in_=True).q, lt.call(now_ns=1_500_000, in_=True)\n\
+         (False, IecOutput(q=True, et=1500000))";
     Tof = "TOF", Tof, "TOF: off-delay; Q falls PT after IN fell.";
     Tonr = "TONR", Tonr, "TONR: retentive on-delay; ET accumulates while IN is 1, R clears it.";
 }
