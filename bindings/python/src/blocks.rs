@@ -255,6 +255,78 @@ fn preset<T: Copy>(
     }
 }
 
+/// The Python classes of one family's blocks: each a class around the family's block `$inner`
+/// with the family's own methods (the braces: the constructor and the calls, which name the
+/// class's catalog block `Self::BLOCK`), and what every block class does the same way, written
+/// here once: the implementation it drives, copies, pickle (the class called with the block's
+/// `newargs()`, then its `getstate()`), `repr`.
+macro_rules! block_classes {
+    (@class $cls:ident, $block:ident, { $($methods:tt)* }) => {
+        impl $cls {
+            /// The catalog's block of this class.
+            const BLOCK: Block = Block::$block;
+        }
+
+        #[pymethods]
+        impl $cls {
+            $($methods)*
+
+            /// Whether this is the optimized implementation.
+            #[getter]
+            fn optimized(&self) -> bool {
+                self.0.optimized
+            }
+
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                Self(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                Self(self.0.clone())
+            }
+
+            /// For pickle: the class with the arguments that set what the state does not
+            /// hold (the data type of a timer), then the state (preset, implementation, the
+            /// core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+                let py = slf.py();
+                let this = slf.borrow();
+                let args = this.0.newargs().into_pyobject(py)?.into_any();
+                let state = this.0.getstate().into_pyobject(py)?.into_any();
+                Ok((slf.get_type(), args, state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
+            }
+
+            fn __repr__(&self) -> String {
+                self.0.repr()
+            }
+        }
+    };
+    (
+        $inner:ident,
+        $family_doc:literal,
+        $methods:tt,
+        $($cls:ident = $name:literal, $block:ident, $doc:literal;)*
+    ) => {$(
+        #[doc = $doc]
+        ///
+        #[doc = $family_doc]
+        #[pyclass(module = "plc_timers", name = $name)]
+        pub struct $cls($inner);
+
+        block_classes!(@class $cls, $block, $methods);
+    )*};
+}
+
 // ---------------------------------------------------------------------------------------------
 // S5 timers
 
@@ -313,6 +385,9 @@ impl Clone for S5Block {
 }
 
 impl S5Block {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn new(block: Block, tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<S5Block> {
         let Kind::S5Timer(kind) = block.kind() else {
             return Err(PyValueError::new_err(format!("{block} is not an S5 timer")));
@@ -416,77 +491,32 @@ impl S5Block {
     }
 }
 
-macro_rules! s5_timers {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `tv`: the time value, a literal (`"S5T#5S"`, `"W#16#2050"`), a word (int) or an
-        /// `S5Time`; `call()` may give another. `optimized=True` drives the optimized
-        /// implementation (one 32-bit word) instead of the reference.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(S5Block);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (tv = None, *, optimized = false))]
-            fn new(tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                S5Block::new(Block::$block, tv, optimized).map($cls)
-            }
-
-            /// One call at CPU time `now_ms` with the inputs S, R, FR and TV (this call's or
-            /// the block's); returns Q, BI and BCD.
-            #[pyo3(signature = (now_ms, s = false, r = false, fr = false, tv = None))]
-            fn call(
-                &mut self,
-                now_ms: &Bound<'_, PyAny>,
-                s: bool,
-                r: bool,
-                fr: bool,
-                tv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyS5Output> {
-                self.0.call(now_ms, s, r, fr, tv)
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    S5Block,
+    "`tv`: the time value, a literal (`\"S5T#5S\"`, `\"W#16#2050\"`), a word (int) or an \
+     `S5Time`; `call()` may give another. `optimized=True` drives the optimized implementation \
+     (one 32-bit word) instead of the reference.",
+    {
+        #[new]
+        #[pyo3(signature = (tv = None, *, optimized = false))]
+        fn new(tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
+            S5Block::new(Self::BLOCK, tv, optimized).map(Self)
         }
-    )*};
-}
 
-s5_timers! {
+        /// One call at CPU time `now_ms` with the inputs S, R, FR and TV (this call's or
+        /// the block's); returns Q, BI and BCD.
+        #[pyo3(signature = (now_ms, s = false, r = false, fr = false, tv = None))]
+        fn call(
+            &mut self,
+            now_ms: &Bound<'_, PyAny>,
+            s: bool,
+            r: bool,
+            fr: bool,
+            tv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyS5Output> {
+            self.0.call(now_ms, s, r, fr, tv)
+        }
+    },
     SPulse = "S_PULSE", SPulse, "S_PULSE (STL `SP`): a pulse of TV while S stays 1.";
     SPext = "S_PEXT", SPext, "S_PEXT (STL `SE`): an extended pulse of TV from a rising S.";
     SOdt = "S_ODT", SOdt,
@@ -884,135 +914,88 @@ impl IecBlock {
     }
 }
 
-macro_rules! iec_timers {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `type`: the data type of PT and ET, `"TIME"` (default; the clock, PT and ET in
-        /// milliseconds, the 16-byte IEC_TIMER) or `"LTIME"` (S7-1500; in nanoseconds, the
-        /// 32-byte IEC_LTIMER). `pt`: the preset, a literal (`"T#500ms"`, or `"LT#1ms500us"`
-        /// for LTIME), an int in the clock's unit, a `Time` (TIME) or an `LTime` (LTIME);
-        /// `call()` may give another. `optimized=True` drives the optimized structure instead
-        /// of the reference.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(IecBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pt = None, r#type = "TIME", *, optimized = false))]
-            fn new(pt: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
-                IecBlock::new(Block::$block, pt, r#type, optimized).map($cls)
-            }
-
-            /// One call of the box at CPU time `now` (whole ms for TIME, whole ns for LTIME;
-            /// by keyword `now_ms=` or `now_ns=`) with IN (`in_`), R (TONR only) and PT (this
-            /// call's or the block's); returns Q and ET (in the clock's unit).
-            #[pyo3(signature = (now = None, /, in_ = false, r = false, pt = None, *, now_ms = None, now_ns = None))]
-            #[allow(clippy::too_many_arguments)]
-            fn call(
-                &mut self,
-                now: Option<&Bound<'_, PyAny>>,
-                in_: bool,
-                r: bool,
-                pt: Option<&Bound<'_, PyAny>>,
-                now_ms: Option<&Bound<'_, PyAny>>,
-                now_ns: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyIecOutput> {
-                self.0.call(NowArg { given: now, ms: now_ms, ns: now_ns }, in_, r, pt)
-            }
-
-            /// Reads the structure's Q at `now` (the clock's unit): an update happens first
-            /// (IEC-ACCESS-01).
-            #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
-            fn read_q(
-                &mut self,
-                now: Option<&Bound<'_, PyAny>>,
-                now_ms: Option<&Bound<'_, PyAny>>,
-                now_ns: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<bool> {
-                let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
-                Ok(self.0.timer.read_q(now))
-            }
-
-            /// Reads the structure's ET at `now` (the clock's unit): an update happens first
-            /// (IEC-ACCESS-01).
-            #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
-            fn read_et(
-                &mut self,
-                now: Option<&Bound<'_, PyAny>>,
-                now_ms: Option<&Bound<'_, PyAny>>,
-                now_ns: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<u64> {
-                let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
-                Ok(self.0.timer.read_et(now))
-            }
-
-            /// The `-(RT)-` coil with power flow: resets the timer data (IEC-RT-01).
-            fn reset_timer(&mut self) {
-                self.0.timer.reset_timer();
-            }
-
-            /// The `-(PT)-` coil with power flow: loads `pt` (of the block's data type) into
-            /// the structure's preset.
-            fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
-                let pt = self.0.timer.preset(pt, "pt")?;
-                self.0.timer.preset_timer(pt);
-                Ok(())
-            }
-
-            /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial
-            /// values; a retentive one keeps its data.
-            fn run_stop_run(&mut self, retentive: bool) {
-                self.0.timer.run_stop_run(retentive);
-            }
-
-            /// The data type's name (`TIME`, `LTIME`).
-            #[getter]
-            fn r#type(&self) -> &'static str {
-                self.0.instruction.data_type().name()
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its data type, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (Option<i64>, &'static str), Bound<'py, PyAny>)> {
-                let this = slf.borrow();
-                let state = this.0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), this.0.newargs(), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    IecBlock,
+    "`type`: the data type of PT and ET, `\"TIME\"` (default; the clock, PT and ET in \
+     milliseconds, the 16-byte IEC_TIMER) or `\"LTIME\"` (S7-1500; in nanoseconds, the 32-byte \
+     IEC_LTIMER). `pt`: the preset, a literal (`\"T#500ms\"`, or `\"LT#1ms500us\"` for LTIME), \
+     an int in the clock's unit, a `Time` (TIME) or an `LTime` (LTIME); `call()` may give \
+     another. `optimized=True` drives the optimized structure instead of the reference.",
+    {
+        #[new]
+        #[pyo3(signature = (pt = None, r#type = "TIME", *, optimized = false))]
+        fn new(pt: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
+            IecBlock::new(Self::BLOCK, pt, r#type, optimized).map(Self)
         }
-    )*};
-}
 
-iec_timers! {
+        /// One call of the box at CPU time `now` (whole ms for TIME, whole ns for LTIME;
+        /// by keyword `now_ms=` or `now_ns=`) with IN (`in_`), R (TONR only) and PT (this
+        /// call's or the block's); returns Q and ET (in the clock's unit).
+        #[pyo3(signature = (now = None, /, in_ = false, r = false, pt = None, *, now_ms = None, now_ns = None))]
+        #[allow(clippy::too_many_arguments)]
+        fn call(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            in_: bool,
+            r: bool,
+            pt: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyIecOutput> {
+            self.0.call(NowArg { given: now, ms: now_ms, ns: now_ns }, in_, r, pt)
+        }
+
+        /// Reads the structure's Q at `now` (the clock's unit): an update happens first
+        /// (IEC-ACCESS-01).
+        #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+        fn read_q(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<bool> {
+            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
+            Ok(self.0.timer.read_q(now))
+        }
+
+        /// Reads the structure's ET at `now` (the clock's unit): an update happens first
+        /// (IEC-ACCESS-01).
+        #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+        fn read_et(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<u64> {
+            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
+            Ok(self.0.timer.read_et(now))
+        }
+
+        /// The `-(RT)-` coil with power flow: resets the timer data (IEC-RT-01).
+        fn reset_timer(&mut self) {
+            self.0.timer.reset_timer();
+        }
+
+        /// The `-(PT)-` coil with power flow: loads `pt` (of the block's data type) into
+        /// the structure's preset.
+        fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
+            let pt = self.0.timer.preset(pt, "pt")?;
+            self.0.timer.preset_timer(pt);
+            Ok(())
+        }
+
+        /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial
+        /// values; a retentive one keeps its data.
+        fn run_stop_run(&mut self, retentive: bool) {
+            self.0.timer.run_stop_run(retentive);
+        }
+
+        /// The data type's name (`TIME`, `LTIME`).
+        #[getter]
+        fn r#type(&self) -> &'static str {
+            self.0.instruction.data_type().name()
+        }
+    },
     Tp = "TP", Tp, "TP: a pulse of PT from a rising IN.";
     Ton = "TON", Ton,
         "TON: on-delay; Q rises when IN has been 1 for PT.\n\n\
@@ -1184,6 +1167,9 @@ impl Clone for CounterBlock {
 }
 
 impl CounterBlock {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn getstate(&self) -> CounterPickle {
         (
             self.optimized,
@@ -1268,83 +1254,38 @@ impl CounterBlock {
     }
 }
 
-macro_rules! iec_counters {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `pv`: the preset (an int of the type); `call()` may give another. `type`: the
-        /// integer type of PV and CV, one of SINT INT DINT LINT USINT UINT UDINT ULINT
-        /// (default INT). `optimized=True` drives the optimized implementation.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(CounterBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pv = None, r#type = "INT", *, optimized = false))]
-            fn new(pv: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
-                CounterBlock::new(Block::$block, pv, r#type, optimized).map($cls)
-            }
-
-            /// One call with the inputs the block has (CU, CD, R, LD; an input it lacks must
-            /// stay False) and PV (this call's or the block's); returns QU, QD and CV.
-            #[pyo3(signature = (cu = false, cd = false, r = false, ld = false, pv = None))]
-            fn call(
-                &mut self,
-                cu: bool,
-                cd: bool,
-                r: bool,
-                ld: bool,
-                pv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyCounterOutput> {
-                self.0.call(cu, cd, r, ld, pv)
-            }
-
-            /// The integer type's name.
-            #[getter]
-            fn r#type(&self) -> &'static str {
-                self.0.int_type.name()
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    CounterBlock,
+    "`pv`: the preset (an int of the type); `call()` may give another. `type`: the integer type \
+     of PV and CV, one of SINT INT DINT LINT USINT UINT UDINT ULINT (default INT). \
+     `optimized=True` drives the optimized implementation.",
+    {
+        #[new]
+        #[pyo3(signature = (pv = None, r#type = "INT", *, optimized = false))]
+        fn new(pv: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
+            CounterBlock::new(Self::BLOCK, pv, r#type, optimized).map(Self)
         }
-    )*};
-}
 
-iec_counters! {
+        /// One call with the inputs the block has (CU, CD, R, LD; an input it lacks must
+        /// stay False) and PV (this call's or the block's); returns QU, QD and CV.
+        #[pyo3(signature = (cu = false, cd = false, r = false, ld = false, pv = None))]
+        fn call(
+            &mut self,
+            cu: bool,
+            cd: bool,
+            r: bool,
+            ld: bool,
+            pv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyCounterOutput> {
+            self.0.call(cu, cd, r, ld, pv)
+        }
+
+        /// The integer type's name.
+        #[getter]
+        fn r#type(&self) -> &'static str {
+            self.0.int_type.name()
+        }
+    },
     Ctu = "CTU", Ctu,
         "CTU: counts rising edges of CU up to the type's maximum; Q (`qu`) = CV >= PV.\n\n\
          >>> from plc_timers import CTU\n\
@@ -1394,6 +1335,9 @@ impl Clone for S5CounterBlock {
 }
 
 impl S5CounterBlock {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn getstate(&self) -> S5CounterPickle {
         let st = self.counter.state();
         (
@@ -1497,79 +1441,34 @@ impl S5CounterBlock {
     }
 }
 
-macro_rules! s5_counters {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `pv`: the preset that S loads, a literal (`"C#5"`), an int 0..=999 or a
-        /// `CounterPreset`; `call()` may give another. `optimized=True` drives the optimized
-        /// implementation (one 16-bit word).
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(S5CounterBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pv = None, *, optimized = false))]
-            fn new(pv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                S5CounterBlock::new(Block::$block, pv, optimized).map($cls)
-            }
-
-            /// One call with CU, CD (those the block has), S, R, FR and PV (this call's or the
-            /// block's; needed when S is 1); returns Q, CV and CV_BCD.
-            #[pyo3(signature = (cu = false, cd = false, s = false, r = false, fr = false, pv = None))]
-            #[allow(clippy::too_many_arguments)]
-            fn call(
-                &mut self,
-                cu: bool,
-                cd: bool,
-                s: bool,
-                r: bool,
-                fr: bool,
-                pv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyS5CounterOutput> {
-                self.0.call(cu, cd, s, r, fr, pv)
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    S5CounterBlock,
+    "`pv`: the preset that S loads, a literal (`\"C#5\"`), an int 0..=999 or a `CounterPreset`; \
+     `call()` may give another. `optimized=True` drives the optimized implementation (one \
+     16-bit word).",
+    {
+        #[new]
+        #[pyo3(signature = (pv = None, *, optimized = false))]
+        fn new(pv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
+            S5CounterBlock::new(Self::BLOCK, pv, optimized).map(Self)
         }
-    )*};
-}
 
-s5_counters! {
+        /// One call with CU, CD (those the block has), S, R, FR and PV (this call's or the
+        /// block's; needed when S is 1); returns Q, CV and CV_BCD.
+        #[pyo3(signature = (cu = false, cd = false, s = false, r = false, fr = false, pv = None))]
+        #[allow(clippy::too_many_arguments)]
+        fn call(
+            &mut self,
+            cu: bool,
+            cd: bool,
+            s: bool,
+            r: bool,
+            fr: bool,
+            pv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyS5CounterOutput> {
+            self.0.call(cu, cd, s, r, fr, pv)
+        }
+    },
     SCu = "S_CU", SCu, "S_CU (STL `CU`, `S`, `R`): an up counter 0..=999.";
     SCd = "S_CD", SCd,
         "S_CD (STL `CD`, `S`, `R`): a down counter, loaded with PV by S.\n\n\
