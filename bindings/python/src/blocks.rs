@@ -30,17 +30,68 @@ use crate::args::{self, forward, now_ms};
 // ---------------------------------------------------------------------------------------------
 // Outputs
 
-/// The outputs of an S5 timer: Q, BI (the remaining time in units of its base, binary) and BCD
-/// (the remaining time in BCD with the base in bits 13-12, as `LC T n` loads it).
-#[pyclass(module = "plc_timers", name = "S5Output", frozen, eq, hash, get_all)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyS5Output {
-    /// Q.
-    pub q: bool,
-    /// BI.
-    pub bi: u16,
-    /// BCD.
-    pub bcd: u16,
+/// A small immutable Python class of one block's outputs (frozen, compared, hashed, every field
+/// readable), constructible from its fields, picklable, with its constructor call as `repr`
+/// (each field written by `$show`: `py_bool`, `decimal` or `hex`); the fields, in order, and
+/// their documentation as the invocation gives them.
+macro_rules! output_class {
+    (
+        $(#[doc = $doc:literal])*
+        $py:ident = $name:literal, new: $new_doc:literal,
+        { $($(#[doc = $fdoc:literal])* $field:ident: $t:ty => $show:ident),+ $(,)? }
+    ) => {
+        $(#[doc = $doc])*
+        #[pyclass(module = "plc_timers", name = $name, frozen, eq, hash, get_all)]
+        #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        pub struct $py {
+            $($(#[doc = $fdoc])* pub $field: $t,)+
+        }
+
+        #[pymethods]
+        impl $py {
+            #[doc = $new_doc]
+            #[new]
+            fn new($($field: $t),+) -> Self {
+                $py { $($field),+ }
+            }
+
+            /// For pickle and `copy`: the arguments of the constructor.
+            fn __getnewargs__(&self) -> ($($t,)+) {
+                ($(self.$field,)+)
+            }
+
+            fn __repr__(&self) -> String {
+                let fields = [$(format!("{}={}", stringify!($field), $show(self.$field))),+];
+                format!("{}({})", $name, fields.join(", "))
+            }
+        }
+    };
+}
+
+/// An integer field as Python writes it.
+fn decimal(v: impl std::fmt::Display) -> String {
+    v.to_string()
+}
+
+/// A word field in hexadecimal, four digits (BCD words read as their digits).
+fn hex(v: u16) -> String {
+    format!("0x{v:04X}")
+}
+
+output_class! {
+    /// The outputs of an S5 timer: Q, BI (the remaining time in units of its base, binary) and
+    /// BCD (the remaining time in BCD with the base in bits 13-12, as `LC T n` loads it).
+    PyS5Output = "S5Output",
+    new: "The outputs Q, BI (0..=999) and BCD (a word) as given, e.g. to compare a call's \
+          result with: `out == S5Output(q, bi, bcd)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// BI.
+        bi: u16 => decimal,
+        /// BCD.
+        bcd: u16 => hex,
+    }
 }
 
 impl From<S5Output> for PyS5Output {
@@ -53,124 +104,49 @@ impl From<S5Output> for PyS5Output {
     }
 }
 
-#[pymethods]
-impl PyS5Output {
-    /// The outputs Q, BI (0..=999) and BCD (a word) as given, e.g. to compare a call's result with: `out ==
-    /// S5Output(q, bi, bcd)`.
-    #[new]
-    #[pyo3(signature = (q, bi, bcd))]
-    fn new(q: bool, bi: u16, bcd: u16) -> Self {
-        PyS5Output { q, bi, bcd }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u16, u16) {
-        (self.q, self.bi, self.bcd)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "S5Output(q={}, bi={}, bcd=0x{:04X})",
-            py_bool(self.q),
-            self.bi,
-            self.bcd
-        )
+output_class! {
+    /// The outputs of an IEC timer: Q and ET (in the unit of its clock: ms for TIME, ns for
+    /// LTIME).
+    PyIecOutput = "IecOutput",
+    new: "The outputs Q and ET (ms, or ns for LTIME) as given, e.g. to compare a call's \
+          result with: `out == IecOutput(q, et)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// ET in the clock's unit (ms for TIME, ns for LTIME).
+        et: u64 => decimal,
     }
 }
 
-/// The outputs of an IEC timer: Q and ET (in the unit of its clock: ms for TIME, ns for
-/// LTIME).
-#[pyclass(module = "plc_timers", name = "IecOutput", frozen, eq, hash, get_all)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyIecOutput {
-    /// Q.
-    pub q: bool,
-    /// ET in the clock's unit (ms for TIME, ns for LTIME).
-    pub et: u64,
-}
-
-#[pymethods]
-impl PyIecOutput {
-    /// The outputs Q and ET (ms, or ns for LTIME) as given, e.g. to compare a call's result
-    /// with: `out == IecOutput(q, et)`.
-    #[new]
-    #[pyo3(signature = (q, et))]
-    fn new(q: bool, et: u64) -> Self {
-        PyIecOutput { q, et }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u64) {
-        (self.q, self.et)
-    }
-
-    fn __repr__(&self) -> String {
-        format!("IecOutput(q={}, et={})", py_bool(self.q), self.et)
+output_class! {
+    /// The outputs of an IEC counter: QU (CV >= PV), QD (CV <= 0) and CV. CTU's Q is `qu`,
+    /// CTD's Q is `qd`.
+    PyCounterOutput = "CounterOutput",
+    new: "The outputs QU, QD and CV as given, e.g. to compare a call's result with: `out == \
+          CounterOutput(qu, qd, cv)`.",
+    {
+        /// QU.
+        qu: bool => py_bool,
+        /// QD.
+        qd: bool => py_bool,
+        /// CV.
+        cv: i128 => decimal,
     }
 }
 
-/// The outputs of an IEC counter: QU (CV >= PV), QD (CV <= 0) and CV. CTU's Q is `qu`, CTD's Q
-/// is `qd`.
-#[pyclass(
-    module = "plc_timers",
-    name = "CounterOutput",
-    frozen,
-    eq,
-    hash,
-    get_all
-)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyCounterOutput {
-    /// QU.
-    pub qu: bool,
-    /// QD.
-    pub qd: bool,
-    /// CV.
-    pub cv: i128,
-}
-
-#[pymethods]
-impl PyCounterOutput {
-    /// The outputs QU, QD and CV as given, e.g. to compare a call's result with: `out ==
-    /// CounterOutput(qu, qd, cv)`.
-    #[new]
-    #[pyo3(signature = (qu, qd, cv))]
-    fn new(qu: bool, qd: bool, cv: i128) -> Self {
-        PyCounterOutput { qu, qd, cv }
+output_class! {
+    /// The outputs of an S5 counter: Q (CV != 0), CV (binary) and CV_BCD.
+    PyS5CounterOutput = "S5CounterOutput",
+    new: "The outputs Q, CV and CV_BCD as given, e.g. to compare a call's result with: `out \
+          == S5CounterOutput(q, cv, cv_bcd)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// CV.
+        cv: u16 => decimal,
+        /// CV_BCD.
+        cv_bcd: u16 => hex,
     }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, bool, i128) {
-        (self.qu, self.qd, self.cv)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "CounterOutput(qu={}, qd={}, cv={})",
-            py_bool(self.qu),
-            py_bool(self.qd),
-            self.cv
-        )
-    }
-}
-
-/// The outputs of an S5 counter: Q (CV != 0), CV (binary) and CV_BCD.
-#[pyclass(
-    module = "plc_timers",
-    name = "S5CounterOutput",
-    frozen,
-    eq,
-    hash,
-    get_all
-)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyS5CounterOutput {
-    /// Q.
-    pub q: bool,
-    /// CV.
-    pub cv: u16,
-    /// CV_BCD.
-    pub cv_bcd: u16,
 }
 
 impl From<S5CounterOutput> for PyS5CounterOutput {
@@ -180,31 +156,6 @@ impl From<S5CounterOutput> for PyS5CounterOutput {
             cv: o.cv,
             cv_bcd: o.cv_bcd,
         }
-    }
-}
-
-#[pymethods]
-impl PyS5CounterOutput {
-    /// The outputs Q, CV and CV_BCD as given, e.g. to compare a call's result with: `out ==
-    /// S5CounterOutput(q, cv, cv_bcd)`.
-    #[new]
-    #[pyo3(signature = (q, cv, cv_bcd))]
-    fn new(q: bool, cv: u16, cv_bcd: u16) -> Self {
-        PyS5CounterOutput { q, cv, cv_bcd }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u16, u16) {
-        (self.q, self.cv, self.cv_bcd)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "S5CounterOutput(q={}, cv={}, cv_bcd=0x{:04X})",
-            py_bool(self.q),
-            self.cv,
-            self.cv_bcd
-        )
     }
 }
 
