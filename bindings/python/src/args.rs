@@ -3,12 +3,12 @@
 
 use plc_timers::catalog::{Block, Family};
 use plc_timers::counter::s5::{CounterPreset, CounterPresetError};
-use plc_timers::time::{CpuTime, LiteralError, LiteralErrorKind, S5Time, Time};
+use plc_timers::time::{CpuTime, LTime, LiteralError, LiteralErrorKind, S5Time, Time};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyString};
 
-use crate::literals::{PyCounterPreset, PyS5Time, PyTime};
+use crate::literals::{PyCounterPreset, PyLTime, PyS5Time, PyTime};
 
 /// The Python type name of `obj`, for messages.
 pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
@@ -85,6 +85,25 @@ pub fn literal_error(py: Python<'_>, e: LiteralError) -> PyErr {
     )
 }
 
+/// The error of a time preset `text` that is not a literal of its block's data type, with a
+/// hint when it is one of the other IEC time type (`LT#…` given to a TIME timer, `T#…` to an
+/// LTIME one): the data type is chosen by the block's `type=`.
+fn time_literal_error(py: Python<'_>, e: LiteralError, other: Option<&str>) -> PyErr {
+    let mut message = e.to_string();
+    if let (LiteralErrorKind::Prefix, Some(other)) = (e.kind, other) {
+        message.push_str(&format!(
+            "; it is a literal of {other}, which the block takes with type=\"{other}\""
+        ));
+    }
+    literal_exception(
+        py,
+        message,
+        e.what.name(),
+        kind_name(e.kind),
+        Some(e.position),
+    )
+}
+
 /// The core's counter preset error as a `plc_timers.LiteralError` (no position: its errors
 /// concern the whole text).
 pub fn preset_error(py: Python<'_>, e: CounterPresetError) -> PyErr {
@@ -117,21 +136,38 @@ pub fn int_in<T: TryFrom<i128>>(obj: &Bound<'_, PyAny>, what: &str, allowed: &st
 
 /// The CPU time of a call: a whole number of milliseconds, 0..=2**64-1.
 pub fn now_ms(obj: &Bound<'_, PyAny>) -> PyResult<CpuTime> {
-    int_in::<u64>(
-        obj,
-        "now_ms",
-        "the CPU time in whole milliseconds, 0..=18446744073709551615",
-    )
-    .map(CpuTime::from_millis)
+    clock(obj, "ms").map(CpuTime::from_millis)
+}
+
+/// The CPU time of a call in whole units of the block's clock (`unit`: `ms`, or `ns` for the
+/// LTIME timers), 0..=2**64-1; the argument is named `now_<unit>` in messages.
+pub fn clock(obj: &Bound<'_, PyAny>, unit: &str) -> PyResult<u64> {
+    let name = format!("now_{unit}");
+    let allowed = format!(
+        "the CPU time in whole {}, 0..=18446744073709551615",
+        unit_name(unit)
+    );
+    int_in::<u64>(obj, &name, &allowed)
+}
+
+/// The word for a clock unit's symbol.
+fn unit_name(unit: &str) -> &str {
+    match unit {
+        "ns" => "nanoseconds",
+        _ => "milliseconds",
+    }
 }
 
 /// Rejects a CPU time before the previous call's: time must not decrease.
 pub fn forward(now: CpuTime, last: Option<CpuTime>) -> PyResult<()> {
+    forward_in(now.as_millis(), last.map(CpuTime::as_millis), "ms")
+}
+
+/// [`forward`] for a clock in `unit` (`ms`, `ns`).
+pub fn forward_in(now: u64, last: Option<u64>, unit: &str) -> PyResult<()> {
     match last {
         Some(last) if now < last => Err(PyValueError::new_err(format!(
-            "now_ms goes backwards: {} after {}; the CPU time must not decrease",
-            now.as_millis(),
-            last.as_millis()
+            "now_{unit} goes backwards: {now} after {last}; the CPU time must not decrease"
         ))),
         _ => Ok(()),
     }
@@ -180,12 +216,14 @@ pub fn time(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
     }
     if let Ok(text) = obj.cast::<PyString>() {
         let text = text.to_cow()?;
-        return Time::parse(text.trim()).map_err(|e| literal_error(py, e));
+        let text = text.trim();
+        let other = LTime::parse(text).is_ok().then_some("LTIME");
+        return Time::parse(text).map_err(|e| time_literal_error(py, e, other));
     }
     if obj.is_instance_of::<PyBool>() || obj.extract::<i128>().is_err() {
         return Err(PyTypeError::new_err(format!(
             "{what} is a TIME: a literal such as \"T#500ms\", an int of milliseconds \
-             (-2147483648..=2147483647) or a Time; got {} ({})",
+             (-2147483648..=2147483647) or a Time (an LTime needs type=\"LTIME\"); got {} ({})",
             shown(obj),
             type_name(obj)
         )));
@@ -196,6 +234,36 @@ pub fn time(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
         "a TIME in milliseconds, -2147483648..=2147483647",
     )
     .map(Time::from_millis)
+}
+
+/// An LTIME: a literal (`"LT#1ms500us"`, `"LTIME#30D"`, whole nanoseconds as text), an int of
+/// nanoseconds (-2**63..=2**63-1) or an `LTime`. A `Time` is refused: the data types differ,
+/// as TIA Portal keeps them apart.
+pub fn ltime(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<LTime> {
+    let py = obj.py();
+    if let Ok(t) = obj.cast::<PyLTime>() {
+        return Ok(t.get().0);
+    }
+    if let Ok(text) = obj.cast::<PyString>() {
+        let text = text.to_cow()?;
+        let text = text.trim();
+        let other = Time::parse(text).is_ok().then_some("TIME");
+        return LTime::parse(text).map_err(|e| time_literal_error(py, e, other));
+    }
+    if obj.is_instance_of::<PyBool>() || obj.extract::<i128>().is_err() {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is an LTIME: a literal such as \"LT#1ms500us\", an int of nanoseconds \
+             (-9223372036854775808..=9223372036854775807) or an LTime; got {} ({})",
+            shown(obj),
+            type_name(obj)
+        )));
+    }
+    int_in::<i64>(
+        obj,
+        what,
+        "an LTIME in nanoseconds, -9223372036854775808..=9223372036854775807",
+    )
+    .map(LTime::from_nanos)
 }
 
 /// An S5 counter preset: a literal (`"C#5"`, `"5"`, `"W#16#0005"`), an int 0..=999 or a

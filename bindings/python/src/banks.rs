@@ -378,7 +378,10 @@ impl PyTonBank {
         let i = lane(i, self.n, "timer")?;
         let state = lock(&self.lanes).get(i);
         state
-            .map(|s| crate::blocks::PyIecOutput { q: s.q, et: s.et })
+            .map(|s| crate::blocks::PyIecOutput {
+                q: s.q,
+                et: u64::from(s.et),
+            })
             .ok_or_else(|| PyIndexError::new_err(format!("no timer {i}")))
     }
 

@@ -4,6 +4,8 @@
 
 use std::marker::PhantomData;
 
+use plc_timers::block::Instruction;
+use plc_timers::catalog::DataType;
 use plc_timers::catalog::{Block, Kind, Port};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
@@ -13,11 +15,13 @@ use plc_timers::counter::{
     Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
     CounterState,
 };
-use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
+use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
-use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+use plc_timers::time::{
+    clock::ClockWord, CpuTime, IecDuration, LTime, S5Time, Time, TimeBase, TimeUnit,
+};
 use plc_timers_trace::{preset_option, IntType};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyType;
 
@@ -26,17 +30,68 @@ use crate::args::{self, forward, now_ms};
 // ---------------------------------------------------------------------------------------------
 // Outputs
 
-/// The outputs of an S5 timer: Q, BI (the remaining time in units of its base, binary) and BCD
-/// (the remaining time in BCD with the base in bits 13-12, as `LC T n` loads it).
-#[pyclass(module = "plc_timers", name = "S5Output", frozen, eq, hash, get_all)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyS5Output {
-    /// Q.
-    pub q: bool,
-    /// BI.
-    pub bi: u16,
-    /// BCD.
-    pub bcd: u16,
+/// A small immutable Python class of one block's outputs (frozen, compared, hashed, every field
+/// readable), constructible from its fields, picklable, with its constructor call as `repr`
+/// (each field written by `$show`: `py_bool`, `decimal` or `hex`); the fields, in order, and
+/// their documentation as the invocation gives them.
+macro_rules! output_class {
+    (
+        $(#[doc = $doc:literal])*
+        $py:ident = $name:literal, new: $new_doc:literal,
+        { $($(#[doc = $fdoc:literal])* $field:ident: $t:ty => $show:ident),+ $(,)? }
+    ) => {
+        $(#[doc = $doc])*
+        #[pyclass(module = "plc_timers", name = $name, frozen, eq, hash, get_all)]
+        #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        pub struct $py {
+            $($(#[doc = $fdoc])* pub $field: $t,)+
+        }
+
+        #[pymethods]
+        impl $py {
+            #[doc = $new_doc]
+            #[new]
+            fn new($($field: $t),+) -> Self {
+                $py { $($field),+ }
+            }
+
+            /// For pickle and `copy`: the arguments of the constructor.
+            fn __getnewargs__(&self) -> ($($t,)+) {
+                ($(self.$field,)+)
+            }
+
+            fn __repr__(&self) -> String {
+                let fields = [$(format!("{}={}", stringify!($field), $show(self.$field))),+];
+                format!("{}({})", $name, fields.join(", "))
+            }
+        }
+    };
+}
+
+/// An integer field as Python writes it.
+fn decimal(v: impl std::fmt::Display) -> String {
+    v.to_string()
+}
+
+/// A word field in hexadecimal, four digits (BCD words read as their digits).
+fn hex(v: u16) -> String {
+    format!("0x{v:04X}")
+}
+
+output_class! {
+    /// The outputs of an S5 timer: Q, BI (the remaining time in units of its base, binary) and
+    /// BCD (the remaining time in BCD with the base in bits 13-12, as `LC T n` loads it).
+    PyS5Output = "S5Output",
+    new: "The outputs Q, BI (0..=999) and BCD (a word) as given, e.g. to compare a call's \
+          result with: `out == S5Output(q, bi, bcd)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// BI.
+        bi: u16 => decimal,
+        /// BCD.
+        bcd: u16 => hex,
+    }
 }
 
 impl From<S5Output> for PyS5Output {
@@ -49,129 +104,49 @@ impl From<S5Output> for PyS5Output {
     }
 }
 
-#[pymethods]
-impl PyS5Output {
-    /// The outputs Q, BI (0..=999) and BCD (a word) as given, e.g. to compare a call's result with: `out ==
-    /// S5Output(q, bi, bcd)`.
-    #[new]
-    #[pyo3(signature = (q, bi, bcd))]
-    fn new(q: bool, bi: u16, bcd: u16) -> Self {
-        PyS5Output { q, bi, bcd }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u16, u16) {
-        (self.q, self.bi, self.bcd)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "S5Output(q={}, bi={}, bcd=0x{:04X})",
-            py_bool(self.q),
-            self.bi,
-            self.bcd
-        )
+output_class! {
+    /// The outputs of an IEC timer: Q and ET (in the unit of its clock: ms for TIME, ns for
+    /// LTIME).
+    PyIecOutput = "IecOutput",
+    new: "The outputs Q and ET (ms, or ns for LTIME) as given, e.g. to compare a call's \
+          result with: `out == IecOutput(q, et)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// ET in the clock's unit (ms for TIME, ns for LTIME).
+        et: u64 => decimal,
     }
 }
 
-/// The outputs of an IEC timer: Q and ET (ms).
-#[pyclass(module = "plc_timers", name = "IecOutput", frozen, eq, hash, get_all)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyIecOutput {
-    /// Q.
-    pub q: bool,
-    /// ET in milliseconds.
-    pub et: u32,
-}
-
-impl From<IecOutput<u32>> for PyIecOutput {
-    fn from(o: IecOutput<u32>) -> Self {
-        PyIecOutput { q: o.q, et: o.et }
+output_class! {
+    /// The outputs of an IEC counter: QU (CV >= PV), QD (CV <= 0) and CV. CTU's Q is `qu`,
+    /// CTD's Q is `qd`.
+    PyCounterOutput = "CounterOutput",
+    new: "The outputs QU, QD and CV as given, e.g. to compare a call's result with: `out == \
+          CounterOutput(qu, qd, cv)`.",
+    {
+        /// QU.
+        qu: bool => py_bool,
+        /// QD.
+        qd: bool => py_bool,
+        /// CV.
+        cv: i128 => decimal,
     }
 }
 
-#[pymethods]
-impl PyIecOutput {
-    /// The outputs Q and ET (ms) as given, e.g. to compare a call's result with: `out ==
-    /// IecOutput(q, et)`.
-    #[new]
-    #[pyo3(signature = (q, et))]
-    fn new(q: bool, et: u32) -> Self {
-        PyIecOutput { q, et }
+output_class! {
+    /// The outputs of an S5 counter: Q (CV != 0), CV (binary) and CV_BCD.
+    PyS5CounterOutput = "S5CounterOutput",
+    new: "The outputs Q, CV and CV_BCD as given, e.g. to compare a call's result with: `out \
+          == S5CounterOutput(q, cv, cv_bcd)`.",
+    {
+        /// Q.
+        q: bool => py_bool,
+        /// CV.
+        cv: u16 => decimal,
+        /// CV_BCD.
+        cv_bcd: u16 => hex,
     }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u32) {
-        (self.q, self.et)
-    }
-
-    fn __repr__(&self) -> String {
-        format!("IecOutput(q={}, et={})", py_bool(self.q), self.et)
-    }
-}
-
-/// The outputs of an IEC counter: QU (CV >= PV), QD (CV <= 0) and CV. CTU's Q is `qu`, CTD's Q
-/// is `qd`.
-#[pyclass(
-    module = "plc_timers",
-    name = "CounterOutput",
-    frozen,
-    eq,
-    hash,
-    get_all
-)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyCounterOutput {
-    /// QU.
-    pub qu: bool,
-    /// QD.
-    pub qd: bool,
-    /// CV.
-    pub cv: i128,
-}
-
-#[pymethods]
-impl PyCounterOutput {
-    /// The outputs QU, QD and CV as given, e.g. to compare a call's result with: `out ==
-    /// CounterOutput(qu, qd, cv)`.
-    #[new]
-    #[pyo3(signature = (qu, qd, cv))]
-    fn new(qu: bool, qd: bool, cv: i128) -> Self {
-        PyCounterOutput { qu, qd, cv }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, bool, i128) {
-        (self.qu, self.qd, self.cv)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "CounterOutput(qu={}, qd={}, cv={})",
-            py_bool(self.qu),
-            py_bool(self.qd),
-            self.cv
-        )
-    }
-}
-
-/// The outputs of an S5 counter: Q (CV != 0), CV (binary) and CV_BCD.
-#[pyclass(
-    module = "plc_timers",
-    name = "S5CounterOutput",
-    frozen,
-    eq,
-    hash,
-    get_all
-)]
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct PyS5CounterOutput {
-    /// Q.
-    pub q: bool,
-    /// CV.
-    pub cv: u16,
-    /// CV_BCD.
-    pub cv_bcd: u16,
 }
 
 impl From<S5CounterOutput> for PyS5CounterOutput {
@@ -181,31 +156,6 @@ impl From<S5CounterOutput> for PyS5CounterOutput {
             cv: o.cv,
             cv_bcd: o.cv_bcd,
         }
-    }
-}
-
-#[pymethods]
-impl PyS5CounterOutput {
-    /// The outputs Q, CV and CV_BCD as given, e.g. to compare a call's result with: `out ==
-    /// S5CounterOutput(q, cv, cv_bcd)`.
-    #[new]
-    #[pyo3(signature = (q, cv, cv_bcd))]
-    fn new(q: bool, cv: u16, cv_bcd: u16) -> Self {
-        PyS5CounterOutput { q, cv, cv_bcd }
-    }
-
-    /// For pickle and `copy`: the arguments of the constructor.
-    fn __getnewargs__(&self) -> (bool, u16, u16) {
-        (self.q, self.cv, self.cv_bcd)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "S5CounterOutput(q={}, cv={}, cv_bcd=0x{:04X})",
-            py_bool(self.q),
-            self.cv,
-            self.cv_bcd
-        )
     }
 }
 
@@ -254,6 +204,78 @@ fn preset<T: Copy>(
             "{block} needs its {name}: give {name}= to {block}(…) or to call()"
         ))),
     }
+}
+
+/// The Python classes of one family's blocks: each a class around the family's block `$inner`
+/// with the family's own methods (the braces: the constructor and the calls, which name the
+/// class's catalog block `Self::BLOCK`), and what every block class does the same way, written
+/// here once: the implementation it drives, copies, pickle (the class called with the block's
+/// `newargs()`, then its `getstate()`), `repr`.
+macro_rules! block_classes {
+    (@class $cls:ident, $block:ident, { $($methods:tt)* }) => {
+        impl $cls {
+            /// The catalog's block of this class.
+            const BLOCK: Block = Block::$block;
+        }
+
+        #[pymethods]
+        impl $cls {
+            $($methods)*
+
+            /// Whether this is the optimized implementation.
+            #[getter]
+            fn optimized(&self) -> bool {
+                self.0.optimized
+            }
+
+            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
+            /// snapshot to go back to).
+            fn __copy__(&self) -> Self {
+                Self(self.0.clone())
+            }
+
+            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+                Self(self.0.clone())
+            }
+
+            /// For pickle: the class with the arguments that set what the state does not
+            /// hold (the data type of a timer), then the state (preset, implementation, the
+            /// core's state, the last time).
+            fn __reduce__<'py>(
+                slf: &Bound<'py, Self>,
+            ) -> PyResult<(Bound<'py, PyType>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+                let py = slf.py();
+                let this = slf.borrow();
+                let args = this.0.newargs().into_pyobject(py)?.into_any();
+                let state = this.0.getstate().into_pyobject(py)?.into_any();
+                Ok((slf.get_type(), args, state))
+            }
+
+            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
+            /// `ValueError`.
+            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+                self.0.setstate(state)
+            }
+
+            fn __repr__(&self) -> String {
+                self.0.repr()
+            }
+        }
+    };
+    (
+        $inner:ident,
+        $family_doc:literal,
+        $methods:tt,
+        $($cls:ident = $name:literal, $block:ident, $doc:literal;)*
+    ) => {$(
+        #[doc = $doc]
+        ///
+        #[doc = $family_doc]
+        #[pyclass(module = "plc_timers", name = $name)]
+        pub struct $cls($inner);
+
+        block_classes!(@class $cls, $block, $methods);
+    )*};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -314,6 +336,9 @@ impl Clone for S5Block {
 }
 
 impl S5Block {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn new(block: Block, tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<S5Block> {
         let Kind::S5Timer(kind) = block.kind() else {
             return Err(PyValueError::new_err(format!("{block} is not an S5 timer")));
@@ -417,77 +442,32 @@ impl S5Block {
     }
 }
 
-macro_rules! s5_timers {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `tv`: the time value, a literal (`"S5T#5S"`, `"W#16#2050"`), a word (int) or an
-        /// `S5Time`; `call()` may give another. `optimized=True` drives the optimized
-        /// implementation (one 32-bit word) instead of the reference.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(S5Block);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (tv = None, *, optimized = false))]
-            fn new(tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                S5Block::new(Block::$block, tv, optimized).map($cls)
-            }
-
-            /// One call at CPU time `now_ms` with the inputs S, R, FR and TV (this call's or
-            /// the block's); returns Q, BI and BCD.
-            #[pyo3(signature = (now_ms, s = false, r = false, fr = false, tv = None))]
-            fn call(
-                &mut self,
-                now_ms: &Bound<'_, PyAny>,
-                s: bool,
-                r: bool,
-                fr: bool,
-                tv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyS5Output> {
-                self.0.call(now_ms, s, r, fr, tv)
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    S5Block,
+    "`tv`: the time value, a literal (`\"S5T#5S\"`, `\"W#16#2050\"`), a word (int) or an \
+     `S5Time`; `call()` may give another. `optimized=True` drives the optimized implementation \
+     (one 32-bit word) instead of the reference.",
+    {
+        #[new]
+        #[pyo3(signature = (tv = None, *, optimized = false))]
+        fn new(tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
+            S5Block::new(Self::BLOCK, tv, optimized).map(Self)
         }
-    )*};
-}
 
-s5_timers! {
+        /// One call at CPU time `now_ms` with the inputs S, R, FR and TV (this call's or
+        /// the block's); returns Q, BI and BCD.
+        #[pyo3(signature = (now_ms, s = false, r = false, fr = false, tv = None))]
+        fn call(
+            &mut self,
+            now_ms: &Bound<'_, PyAny>,
+            s: bool,
+            r: bool,
+            fr: bool,
+            tv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyS5Output> {
+            self.0.call(now_ms, s, r, fr, tv)
+        }
+    },
     SPulse = "S_PULSE", SPulse, "S_PULSE (STL `SP`): a pulse of TV while S stays 1.";
     SPext = "S_PEXT", SPext, "S_PEXT (STL `SE`): an extended pulse of TV from a rising S.";
     SOdt = "S_ODT", SOdt,
@@ -505,34 +485,223 @@ s5_timers! {
 // ---------------------------------------------------------------------------------------------
 // IEC timers
 
-/// An IEC timer of either implementation, copyable behind the interface.
-trait IecDyn: IecTimerOps<u32> + Send + Sync {
-    fn clone_box(&self) -> Box<dyn IecDyn>;
+/// A data type of the IEC timers as Python gives it: how a preset is read from a Python object.
+trait PyDuration: IecDuration<Clock: Send + Sync> {
+    /// Reads `obj` as this data type, or the error naming what is allowed.
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Self>;
 }
 
-impl<X: IecTimerOps<u32> + Copy + Send + Sync + 'static> IecDyn for X {
-    fn clone_box(&self) -> Box<dyn IecDyn> {
-        Box::new(*self)
+impl PyDuration for Time {
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
+        args::time(obj, what)
     }
 }
 
-/// The state pickle saves for an IEC timer: optimized, PT (ms), the last `now_ms`, then the
-/// [`IecState`]'s fields (the kind by name).
+impl PyDuration for LTime {
+    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<LTime> {
+        args::ltime(obj, what)
+    }
+}
+
+/// An IEC timer of either implementation and either data type (TIME, LTIME) behind one
+/// object-safe interface: times as whole units of its clock (ms for TIME, ns for LTIME), so
+/// that the Python class is written once.
+trait IecDyn: Send + Sync {
+    fn clone_box(&self) -> Box<dyn IecDyn>;
+    /// The unit of the clock and of PT and ET: `ms` or `ns`.
+    fn unit(&self) -> &'static str;
+    /// A preset read from Python, in units.
+    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64>;
+    /// A preset in units as its literal (`T#500MS`, `LT#1MS_500US`).
+    fn show(&self, pt: i64) -> String;
+    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput;
+    fn read_q(&mut self, now: u64) -> bool;
+    fn read_et(&mut self, now: u64) -> u64;
+    fn reset_timer(&mut self);
+    fn preset_timer(&mut self, pt: i64);
+    fn run_stop_run(&mut self, retentive: bool);
+    /// The state with the clock words widened to `u64`.
+    fn state(&self) -> IecState<u64>;
+    /// A timer of this implementation and data type in `state` (`None`: not a state it can be
+    /// in, or a word wider than its clock).
+    fn with_state(&self, state: IecState<u64>) -> Option<Box<dyn IecDyn>>;
+}
+
+/// The checking constructor from a state both implementations have.
+trait FromIecState<C>: Sized {
+    fn from_iec_state(state: IecState<C>) -> Option<Self>;
+}
+
+impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerRef<C, D> {
+    fn from_iec_state(state: IecState<C>) -> Option<Self> {
+        IecTimerRef::from_state(state)
+    }
+}
+
+impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerOf<C, D> {
+    fn from_iec_state(state: IecState<C>) -> Option<Self> {
+        IecTimerOf::from_state(state)
+    }
+}
+
+/// An IEC timer `X` on the data type `D`.
+struct TypedTimer<X, D>(X, PhantomData<fn() -> D>);
+
+impl<D: PyDuration, X> TypedTimer<X, D> {
+    /// A preset in units; `pt` was read for this data type, so it is in range.
+    fn duration(pt: i64) -> D {
+        D::from_units(i128::from(pt)).unwrap_or(D::ZERO)
+    }
+}
+
+/// A clock word from `u64`, `None` when it does not fit.
+fn word<C: ClockWord>(v: u64) -> Option<C> {
+    (v <= C::MAX.to_u64()).then(|| C::from_u64_wrapping(v))
+}
+
+impl<D: PyDuration, X> IecDyn for TypedTimer<X, D>
+where
+    X: IecTimerOps<D::Clock, D> + FromIecState<D::Clock> + Copy + Send + Sync + 'static,
+{
+    fn clone_box(&self) -> Box<dyn IecDyn> {
+        Box::new(TypedTimer::<X, D>(self.0, PhantomData))
+    }
+
+    fn unit(&self) -> &'static str {
+        <D::Unit as TimeUnit>::SYMBOL
+    }
+
+    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64> {
+        D::extract(obj, what).map(D::units_signed)
+    }
+
+    fn show(&self, pt: i64) -> String {
+        Self::duration(pt).to_string()
+    }
+
+    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput {
+        let input = IecInput::new(input, Self::duration(pt)).with_reset(reset);
+        let o = self.0.call(kind, CpuTime::from_ticks(now), input);
+        PyIecOutput {
+            q: o.q,
+            et: o.et.to_u64(),
+        }
+    }
+
+    fn read_q(&mut self, now: u64) -> bool {
+        self.0.read_q(CpuTime::from_ticks(now))
+    }
+
+    fn read_et(&mut self, now: u64) -> u64 {
+        self.0.read_et(CpuTime::from_ticks(now)).to_u64()
+    }
+
+    fn reset_timer(&mut self) {
+        self.0.reset_timer();
+    }
+
+    fn preset_timer(&mut self, pt: i64) {
+        self.0.preset_timer(Self::duration(pt));
+    }
+
+    fn run_stop_run(&mut self, retentive: bool) {
+        self.0.run_stop_run(retentive);
+    }
+
+    fn state(&self) -> IecState<u64> {
+        let s = self.0.state();
+        IecState {
+            kind: s.kind,
+            input: s.input,
+            running: s.running,
+            start: s.start.to_u64(),
+            pt: s.pt.to_u64(),
+            et: s.et.to_u64(),
+            q: s.q,
+        }
+    }
+
+    fn with_state(&self, s: IecState<u64>) -> Option<Box<dyn IecDyn>> {
+        let state = IecState {
+            kind: s.kind,
+            input: s.input,
+            running: s.running,
+            start: word(s.start)?,
+            pt: word(s.pt)?,
+            et: word(s.et)?,
+            q: s.q,
+        };
+        let timer = X::from_iec_state(state)?;
+        Some(Box::new(TypedTimer::<X, D>(timer, PhantomData)))
+    }
+}
+
+/// A new timer of implementation `optimized` on the data type `D`.
+fn typed_timer<D: PyDuration>(optimized: bool) -> Box<dyn IecDyn> {
+    if optimized {
+        Box::new(TypedTimer::<IecTimerOf<D::Clock, D>, D>(
+            IecTimerOf::default(),
+            PhantomData,
+        ))
+    } else {
+        Box::new(TypedTimer::<IecTimerRef<D::Clock, D>, D>(
+            IecTimerRef::default(),
+            PhantomData,
+        ))
+    }
+}
+
+/// A new timer of `instruction` (an IEC timer on TIME or LTIME).
+fn iec_timer(instruction: Instruction, optimized: bool) -> Box<dyn IecDyn> {
+    match instruction.data_type() {
+        DataType::LTime => typed_timer::<LTime>(optimized),
+        _ => typed_timer::<Time>(optimized),
+    }
+}
+
+/// The instruction `block` on the data type named `type_name` (ASCII case ignored), or a
+/// `ValueError` naming the data types the block takes.
+fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
+    let takes = || {
+        let names: Vec<&str> = block.data_types().iter().map(|t| t.name()).collect();
+        names.join(" ")
+    };
+    let data_type = DataType::lookup(type_name.trim()).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown data type `{type_name}`; {block} takes {}",
+            takes()
+        ))
+    })?;
+    Instruction::new(block, data_type).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The state pickle saves for an IEC timer: optimized, PT (in units of the clock), the last
+/// `now`, then the [`IecState`]'s fields (the kind by name). The data type is an argument of
+/// the class (`__reduce__`).
 type IecTimerPickle = (
     bool,
-    Option<i32>,
+    Option<i64>,
     Option<u64>,
-    (Option<String>, bool, bool, u32, u32, u32, bool),
+    (Option<String>, bool, bool, u64, u64, u64, bool),
 );
 
-/// An IEC timer of one kind, reference or optimized.
+/// The CPU time of an IEC timer's call as Python gave it: first (`given`), or by the keyword
+/// of its unit (`now_ms=`, `now_ns=`); exactly one, that of the block's clock.
+struct NowArg<'a, 'py> {
+    given: Option<&'a Bound<'py, PyAny>>,
+    ms: Option<&'a Bound<'py, PyAny>>,
+    ns: Option<&'a Bound<'py, PyAny>>,
+}
+
+/// An IEC timer of one kind and data type, reference or optimized.
 pub struct IecBlock {
     block: Block,
     kind: IecKind,
+    instruction: Instruction,
     timer: Box<dyn IecDyn>,
     optimized: bool,
-    pt: Option<Time>,
-    last: Option<CpuTime>,
+    pt: Option<i64>,
+    last: Option<u64>,
 }
 
 impl Clone for IecBlock {
@@ -545,21 +714,24 @@ impl Clone for IecBlock {
 }
 
 impl IecBlock {
-    fn new(block: Block, pt: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<IecBlock> {
+    fn new(
+        block: Block,
+        pt: Option<&Bound<'_, PyAny>>,
+        type_name: &str,
+        optimized: bool,
+    ) -> PyResult<IecBlock> {
         let Kind::IecTimer(kind) = block.kind() else {
             return Err(PyValueError::new_err(format!(
                 "{block} is not an IEC timer"
             )));
         };
-        let pt = pt.map(|t| args::time(t, "pt")).transpose()?;
-        let timer: Box<dyn IecDyn> = if optimized {
-            Box::new(IecTimer::new())
-        } else {
-            Box::new(IecTimerRef::<u32>::new())
-        };
+        let instruction = instruction(block, type_name)?;
+        let timer = iec_timer(instruction, optimized);
+        let pt = pt.map(|t| timer.preset(t, "pt")).transpose()?;
         Ok(IecBlock {
             block,
             kind,
+            instruction,
             timer,
             optimized,
             pt,
@@ -567,33 +739,55 @@ impl IecBlock {
         })
     }
 
-    fn at(&mut self, now: &Bound<'_, PyAny>) -> PyResult<CpuTime> {
-        let now = now_ms(now)?;
-        forward(now, self.last)?;
+    /// The CPU time of a call, given positionally (in the block's unit) or by the keyword of
+    /// the block's unit (`now_ms`, `now_ns`), not before the previous call's.
+    fn at(&mut self, now: NowArg<'_, '_>) -> PyResult<u64> {
+        let unit = self.timer.unit();
+        let keyword = format!("now_{unit}");
+        let given = match (now.given, now.ms, now.ns) {
+            (Some(t), None, None) => t,
+            (None, Some(t), None) if unit == "ms" => t,
+            (None, None, Some(t)) if unit == "ns" => t,
+            (None, None, None) => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} needs the CPU time: give it first or as {keyword}= (whole {unit})",
+                    self.instruction
+                )))
+            }
+            _ => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} runs on a clock in {unit}: give the CPU time once, first or as \
+                     {keyword}=",
+                    self.instruction
+                )))
+            }
+        };
+        let now = args::clock(given, unit)?;
+        args::forward_in(now, self.last, unit)?;
         self.last = Some(now);
         Ok(now)
     }
 
     fn call(
         &mut self,
-        now: &Bound<'_, PyAny>,
+        now: NowArg<'_, '_>,
         input: bool,
         r: bool,
         pt: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyIecOutput> {
         has_input(self.block, Port::R, r)?;
-        let pt = preset(self.block, pt, self.pt, args::time)?;
+        let timer = &self.timer;
+        let pt = preset(self.block, pt, self.pt, |o, what| timer.preset(o, what))?;
         let now = self.at(now)?;
-        let input = IecInput::new(input, pt).with_reset(r);
-        Ok(self.timer.call(self.kind, now, input).into())
+        Ok(self.timer.call(self.kind, now, input, r, pt))
     }
 
     fn getstate(&self) -> IecTimerPickle {
         let st = self.timer.state();
         (
             self.optimized,
-            self.pt.map(Time::as_millis),
-            self.last.map(CpuTime::as_millis),
+            self.pt,
+            self.last,
             (
                 st.kind.map(|k| k.name().to_string()),
                 st.input,
@@ -628,133 +822,131 @@ impl IecBlock {
             et,
             q,
         };
-        let timer: Box<dyn IecDyn> = if optimized {
-            Box::new(IecTimer::from_state(st).ok_or_else(bad)?)
-        } else {
-            Box::new(IecTimerRef::<u32>::from_state(st).ok_or_else(bad)?)
-        };
+        let timer = iec_timer(self.instruction, optimized)
+            .with_state(st)
+            .ok_or_else(bad)?;
+        // The preset must be one of the data type: read it back as the class would.
+        if let Some(v) = pt {
+            let back = timer.preset(&v.into_pyobject(state.py())?.into_any(), "pt");
+            if back.is_err() {
+                return Err(bad());
+            }
+        }
         *self = IecBlock {
             timer,
             optimized,
-            pt: pt.map(Time::from_millis),
-            last: last.map(CpuTime::from_millis),
+            pt,
+            last,
             ..*self
         };
         Ok(())
     }
 
+    /// The constructor's arguments for pickle: the preset is in the state, the data type here.
+    fn newargs(&self) -> (Option<i64>, &'static str) {
+        (None, self.instruction.data_type().name())
+    }
+
     fn repr(&self) -> String {
         let pt = self
             .pt
-            .map_or("None".to_string(), |t| format!("{:?}", t.to_string()));
+            .map_or("None".to_string(), |t| format!("{:?}", self.timer.show(t)));
+        let data_type = self.instruction.data_type();
+        let ty = if data_type == self.block.default_data_type() {
+            String::new()
+        } else {
+            format!(", type={:?}", data_type.name())
+        };
         format!(
-            "{}(pt={pt}, optimized={})",
+            "{}(pt={pt}{ty}, optimized={})",
             self.block,
             py_bool(self.optimized)
         )
     }
 }
 
-macro_rules! iec_timers {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `pt`: the preset, a literal (`"T#500ms"`), an int of milliseconds or a `Time`;
-        /// `call()` may give another. `optimized=True` drives the optimized 16-byte structure
-        /// instead of the reference.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(IecBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pt = None, *, optimized = false))]
-            fn new(pt: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                IecBlock::new(Block::$block, pt, optimized).map($cls)
-            }
-
-            /// One call of the box at CPU time `now_ms` with IN (`in_`), R (TONR only) and PT
-            /// (this call's or the block's); returns Q and ET.
-            #[pyo3(signature = (now_ms, in_ = false, r = false, pt = None))]
-            fn call(
-                &mut self,
-                now_ms: &Bound<'_, PyAny>,
-                in_: bool,
-                r: bool,
-                pt: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyIecOutput> {
-                self.0.call(now_ms, in_, r, pt)
-            }
-
-            /// Reads the structure's Q at `now_ms`: an update happens first (IEC-ACCESS-01).
-            fn read_q(&mut self, now_ms: &Bound<'_, PyAny>) -> PyResult<bool> {
-                let now = self.0.at(now_ms)?;
-                Ok(self.0.timer.read_q(now))
-            }
-
-            /// Reads the structure's ET at `now_ms`: an update happens first (IEC-ACCESS-01).
-            fn read_et(&mut self, now_ms: &Bound<'_, PyAny>) -> PyResult<u32> {
-                let now = self.0.at(now_ms)?;
-                Ok(self.0.timer.read_et(now))
-            }
-
-            /// The `-(RT)-` coil with power flow: resets the timer data (IEC-RT-01).
-            fn reset_timer(&mut self) {
-                self.0.timer.reset_timer();
-            }
-
-            /// The `-(PT)-` coil with power flow: loads `pt` into the structure's preset.
-            fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
-                let pt = args::time(pt, "pt")?;
-                self.0.timer.preset_timer(pt);
-                Ok(())
-            }
-
-            /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial
-            /// values; a retentive one keeps its data.
-            fn run_stop_run(&mut self, retentive: bool) {
-                self.0.timer.run_stop_run(retentive);
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    IecBlock,
+    "`type`: the data type of PT and ET, `\"TIME\"` (default; the clock, PT and ET in \
+     milliseconds, the 16-byte IEC_TIMER) or `\"LTIME\"` (S7-1500; in nanoseconds, the 32-byte \
+     IEC_LTIMER). `pt`: the preset, a literal (`\"T#500ms\"`, or `\"LT#1ms500us\"` for LTIME), \
+     an int in the clock's unit, a `Time` (TIME) or an `LTime` (LTIME); `call()` may give \
+     another. `optimized=True` drives the optimized structure instead of the reference.",
+    {
+        #[new]
+        #[pyo3(signature = (pt = None, r#type = "TIME", *, optimized = false))]
+        fn new(pt: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
+            IecBlock::new(Self::BLOCK, pt, r#type, optimized).map(Self)
         }
-    )*};
-}
 
-iec_timers! {
+        /// One call of the box at CPU time `now` (whole ms for TIME, whole ns for LTIME;
+        /// by keyword `now_ms=` or `now_ns=`) with IN (`in_`), R (TONR only) and PT (this
+        /// call's or the block's); returns Q and ET (in the clock's unit).
+        #[pyo3(signature = (now = None, /, in_ = false, r = false, pt = None, *, now_ms = None, now_ns = None))]
+        #[allow(clippy::too_many_arguments)]
+        fn call(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            in_: bool,
+            r: bool,
+            pt: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyIecOutput> {
+            self.0.call(NowArg { given: now, ms: now_ms, ns: now_ns }, in_, r, pt)
+        }
+
+        /// Reads the structure's Q at `now` (the clock's unit): an update happens first
+        /// (IEC-ACCESS-01).
+        #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+        fn read_q(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<bool> {
+            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
+            Ok(self.0.timer.read_q(now))
+        }
+
+        /// Reads the structure's ET at `now` (the clock's unit): an update happens first
+        /// (IEC-ACCESS-01).
+        #[pyo3(signature = (now = None, /, *, now_ms = None, now_ns = None))]
+        fn read_et(
+            &mut self,
+            now: Option<&Bound<'_, PyAny>>,
+            now_ms: Option<&Bound<'_, PyAny>>,
+            now_ns: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<u64> {
+            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
+            Ok(self.0.timer.read_et(now))
+        }
+
+        /// The `-(RT)-` coil with power flow: resets the timer data (IEC-RT-01).
+        fn reset_timer(&mut self) {
+            self.0.timer.reset_timer();
+        }
+
+        /// The `-(PT)-` coil with power flow: loads `pt` (of the block's data type) into
+        /// the structure's preset.
+        fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
+            let pt = self.0.timer.preset(pt, "pt")?;
+            self.0.timer.preset_timer(pt);
+            Ok(())
+        }
+
+        /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial
+        /// values; a retentive one keeps its data.
+        fn run_stop_run(&mut self, retentive: bool) {
+            self.0.timer.run_stop_run(retentive);
+        }
+
+        /// The data type's name (`TIME`, `LTIME`).
+        #[getter]
+        fn r#type(&self) -> &'static str {
+            self.0.instruction.data_type().name()
+        }
+    },
     Tp = "TP", Tp, "TP: a pulse of PT from a rising IN.";
     Ton = "TON", Ton,
         "TON: on-delay; Q rises when IN has been 1 for PT.\n\n\
@@ -766,7 +958,10 @@ iec_timers! {
          IecOutput(q=True, et=500)\n\
          >>> t.reset_timer()  # the RT coil\n\
          >>> t.read_q(1600)\n\
-         False";
+         False\n\
+         >>> lt = TON(pt=\"LT#1ms500us\", type=\"LTIME\")  # S7-1500: nanoseconds\n\
+         >>> lt.call(0, in_=True).q, lt.call(now_ns=1_500_000, in_=True)\n\
+         (False, IecOutput(q=True, et=1500000))";
     Tof = "TOF", Tof, "TOF: off-delay; Q falls PT after IN fell.";
     Tonr = "TONR", Tonr, "TONR: retentive on-delay; ET accumulates while IN is 1, R clears it.";
 }
@@ -923,6 +1118,9 @@ impl Clone for CounterBlock {
 }
 
 impl CounterBlock {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn getstate(&self) -> CounterPickle {
         (
             self.optimized,
@@ -1007,83 +1205,38 @@ impl CounterBlock {
     }
 }
 
-macro_rules! iec_counters {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `pv`: the preset (an int of the type); `call()` may give another. `type`: the
-        /// integer type of PV and CV, one of SINT INT DINT LINT USINT UINT UDINT ULINT
-        /// (default INT). `optimized=True` drives the optimized implementation.
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(CounterBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pv = None, r#type = "INT", *, optimized = false))]
-            fn new(pv: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
-                CounterBlock::new(Block::$block, pv, r#type, optimized).map($cls)
-            }
-
-            /// One call with the inputs the block has (CU, CD, R, LD; an input it lacks must
-            /// stay False) and PV (this call's or the block's); returns QU, QD and CV.
-            #[pyo3(signature = (cu = false, cd = false, r = false, ld = false, pv = None))]
-            fn call(
-                &mut self,
-                cu: bool,
-                cd: bool,
-                r: bool,
-                ld: bool,
-                pv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyCounterOutput> {
-                self.0.call(cu, cd, r, ld, pv)
-            }
-
-            /// The integer type's name.
-            #[getter]
-            fn r#type(&self) -> &'static str {
-                self.0.int_type.name()
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    CounterBlock,
+    "`pv`: the preset (an int of the type); `call()` may give another. `type`: the integer type \
+     of PV and CV, one of SINT INT DINT LINT USINT UINT UDINT ULINT (default INT). \
+     `optimized=True` drives the optimized implementation.",
+    {
+        #[new]
+        #[pyo3(signature = (pv = None, r#type = "INT", *, optimized = false))]
+        fn new(pv: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
+            CounterBlock::new(Self::BLOCK, pv, r#type, optimized).map(Self)
         }
-    )*};
-}
 
-iec_counters! {
+        /// One call with the inputs the block has (CU, CD, R, LD; an input it lacks must
+        /// stay False) and PV (this call's or the block's); returns QU, QD and CV.
+        #[pyo3(signature = (cu = false, cd = false, r = false, ld = false, pv = None))]
+        fn call(
+            &mut self,
+            cu: bool,
+            cd: bool,
+            r: bool,
+            ld: bool,
+            pv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyCounterOutput> {
+            self.0.call(cu, cd, r, ld, pv)
+        }
+
+        /// The integer type's name.
+        #[getter]
+        fn r#type(&self) -> &'static str {
+            self.0.int_type.name()
+        }
+    },
     Ctu = "CTU", Ctu,
         "CTU: counts rising edges of CU up to the type's maximum; Q (`qu`) = CV >= PV.\n\n\
          >>> from plc_timers import CTU\n\
@@ -1133,6 +1286,9 @@ impl Clone for S5CounterBlock {
 }
 
 impl S5CounterBlock {
+    /// The constructor's arguments for pickle: none, the state holds everything.
+    fn newargs(&self) {}
+
     fn getstate(&self) -> S5CounterPickle {
         let st = self.counter.state();
         (
@@ -1236,79 +1392,34 @@ impl S5CounterBlock {
     }
 }
 
-macro_rules! s5_counters {
-    ($($cls:ident = $name:literal, $block:ident, $doc:literal;)*) => {$(
-        #[doc = $doc]
-        ///
-        /// `pv`: the preset that S loads, a literal (`"C#5"`), an int 0..=999 or a
-        /// `CounterPreset`; `call()` may give another. `optimized=True` drives the optimized
-        /// implementation (one 16-bit word).
-        #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls(S5CounterBlock);
-
-        #[pymethods]
-        impl $cls {
-            #[new]
-            #[pyo3(signature = (pv = None, *, optimized = false))]
-            fn new(pv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-                S5CounterBlock::new(Block::$block, pv, optimized).map($cls)
-            }
-
-            /// One call with CU, CD (those the block has), S, R, FR and PV (this call's or the
-            /// block's; needed when S is 1); returns Q, CV and CV_BCD.
-            #[pyo3(signature = (cu = false, cd = false, s = false, r = false, fr = false, pv = None))]
-            #[allow(clippy::too_many_arguments)]
-            fn call(
-                &mut self,
-                cu: bool,
-                cd: bool,
-                s: bool,
-                r: bool,
-                fr: bool,
-                pv: Option<&Bound<'_, PyAny>>,
-            ) -> PyResult<PyS5CounterOutput> {
-                self.0.call(cu, cd, s, r, fr, pv)
-            }
-
-            /// Whether this is the optimized implementation.
-            #[getter]
-            fn optimized(&self) -> bool {
-                self.0.optimized
-            }
-
-            /// A copy with the same state: `copy.copy(block)`, `copy.deepcopy(block)` (a
-            /// snapshot to go back to).
-            fn __copy__(&self) -> Self {
-                $cls(self.0.clone())
-            }
-
-            fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
-                $cls(self.0.clone())
-            }
-
-            /// For pickle: the class with its defaults, then the state (preset,
-            /// implementation, the core's state, the last time).
-            fn __reduce__<'py>(
-                slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, (), Bound<'py, PyAny>)> {
-                let state = slf.borrow().0.getstate().into_pyobject(slf.py())?.into_any();
-                Ok((slf.get_type(), (), state))
-            }
-
-            /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
-            /// `ValueError`.
-            fn __setstate__(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-                self.0.setstate(state)
-            }
-
-            fn __repr__(&self) -> String {
-                self.0.repr()
-            }
+block_classes! {
+    S5CounterBlock,
+    "`pv`: the preset that S loads, a literal (`\"C#5\"`), an int 0..=999 or a `CounterPreset`; \
+     `call()` may give another. `optimized=True` drives the optimized implementation (one \
+     16-bit word).",
+    {
+        #[new]
+        #[pyo3(signature = (pv = None, *, optimized = false))]
+        fn new(pv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
+            S5CounterBlock::new(Self::BLOCK, pv, optimized).map(Self)
         }
-    )*};
-}
 
-s5_counters! {
+        /// One call with CU, CD (those the block has), S, R, FR and PV (this call's or the
+        /// block's; needed when S is 1); returns Q, CV and CV_BCD.
+        #[pyo3(signature = (cu = false, cd = false, s = false, r = false, fr = false, pv = None))]
+        #[allow(clippy::too_many_arguments)]
+        fn call(
+            &mut self,
+            cu: bool,
+            cd: bool,
+            s: bool,
+            r: bool,
+            fr: bool,
+            pv: Option<&Bound<'_, PyAny>>,
+        ) -> PyResult<PyS5CounterOutput> {
+            self.0.call(cu, cd, s, r, fr, pv)
+        }
+    },
     SCu = "S_CU", SCu, "S_CU (STL `CU`, `S`, `R`): an up counter 0..=999.";
     SCd = "S_CD", SCd,
         "S_CD (STL `CD`, `S`, `R`): a down counter, loaded with PV by S.\n\n\

@@ -4,7 +4,7 @@
 //! - [`blocks`]: every block (`TON`, `S_ODT`, `CTU`, `S_CU`, …), reference or optimized, with
 //!   its outputs as small immutable objects; the IEC timer's RT and PT coils and reads.
 //! - [`memory`]: the S5 timer and counter memory areas with their STL operations.
-//! - [`literals`]: `S5Time`, `Time` and `CounterPreset` with their parsers.
+//! - [`literals`]: `S5Time`, `Time`, `LTime` and `CounterPreset` with their parsers.
 //! - [`trace`]: `run` and `check` over rows in memory, through the engine of the `plc-timers`
 //!   command (`plc_timers_trace`), so that Python and the command line agree by
 //!   construction.
@@ -47,9 +47,10 @@ pyo3::create_exception!(
 /// … S_OFFDT, IEC timers TP TON TOF TONR, IEC counters CTU CTD CTUD, S5 counters S_CU S_CD
 /// S_CUD), each as a class with the reference or the optimized implementation
 /// (`optimized=True`); the memory areas TimerMemory and CounterMemory with their STL
-/// operations; the literals S5Time, Time and CounterPreset; `run` and `check` over traces in
-/// memory (the engine of the `plc-timers` command); TonBank and CounterBank over numpy arrays.
-/// No block reads a clock: every timer call takes the CPU time it runs at, in ms.
+/// operations; the literals S5Time, Time, LTime and CounterPreset; `run` and `check` over traces
+/// in memory (the engine of the `plc-timers` command); TonBank and CounterBank over numpy arrays.
+/// No block reads a clock: every timer call takes the CPU time it runs at, in ms (in ns for the
+/// S7-1500 LTIME timers, `TON(type="LTIME")`).
 ///
 /// >>> import plc_timers
 /// >>> ton = plc_timers.TON(pt="T#500ms")
@@ -77,9 +78,10 @@ fn aliases<'py>(m: &Bound<'py, PyModule>) -> PyResult<()> {
     let typing = py.import("typing")?;
     let union = typing.getattr("Union")?;
     let of = |items: Vec<Bound<'py, PyAny>>| union.get_item(PyTuple::new(py, items)?);
-    let (s5time, time, preset) = (
+    let (s5time, time, ltime, preset) = (
         m.getattr("S5Time")?,
         m.getattr("Time")?,
+        m.getattr("LTime")?,
         m.getattr("CounterPreset")?,
     );
     let (int, str_, bool_) = (
@@ -103,6 +105,7 @@ fn aliases<'py>(m: &Bound<'py, PyModule>) -> PyResult<()> {
     m.add("Row", of(vec![mapping, sequence])?)?;
     m.add("S5TimeLike", of(vec![str_.clone(), int.clone(), s5time])?)?;
     m.add("TimeLike", of(vec![str_.clone(), int.clone(), time])?)?;
+    m.add("LTimeLike", of(vec![str_.clone(), int.clone(), ltime])?)?;
     m.add("CounterPresetLike", of(vec![str_, int, preset])?)?;
     Ok(())
 }

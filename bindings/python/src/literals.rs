@@ -1,8 +1,8 @@
-//! `S5Time`, `Time` and `CounterPreset`: the core's values with their literal parsers, immutable
+//! `S5Time`, `Time`, `LTime` and `CounterPreset`: the core's values with their literal parsers, immutable
 //! and hashable in Python.
 
 use plc_timers::counter::s5::CounterPreset;
-use plc_timers::time::{S5Time, Time};
+use plc_timers::time::{LTime, S5Time, Time};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -156,6 +156,67 @@ impl PyTime {
     }
 }
 
+/// An IEC LTIME (S7-1500): signed 64-bit nanoseconds, the data type of the long IEC timers
+/// (`TON(type="LTIME")`).
+///
+/// >>> from plc_timers import LTime
+/// >>> LTime.parse("LT#1ms500us").nanos
+/// 1500000
+/// >>> str(LTime.from_nanos(-1_500_000))
+/// 'LT#-1MS_500US'
+/// >>> LTime.parse("T#5S")
+/// Traceback (most recent call last):
+///   ...
+/// plc_timers.LiteralError: invalid LTIME literal at byte 0: unknown prefix; write LT#…, LTIME#… (e.g. LT#1MS_500US, LT#-5S) or whole nanoseconds
+#[pyclass(module = "plc_timers", name = "LTime", frozen, eq, hash, ord)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct PyLTime(pub LTime);
+
+#[pymethods]
+impl PyLTime {
+    /// Parses `LT#…`, `LTIME#…` (units D H M S MS US NS) or whole nanoseconds; raises
+    /// `LiteralError` (a `ValueError`) with `kind` and `position`.
+    #[staticmethod]
+    fn parse(py: Python<'_>, text: &str) -> PyResult<PyLTime> {
+        LTime::parse(text)
+            .map(PyLTime)
+            .map_err(|e| literal_error(py, e))
+    }
+
+    /// The LTIME of `nanos`, -2**63..=2**63-1.
+    #[staticmethod]
+    fn from_nanos(nanos: &Bound<'_, PyAny>) -> PyResult<PyLTime> {
+        int_in::<i64>(
+            nanos,
+            "nanos",
+            "an LTIME in nanoseconds, -9223372036854775808..=9223372036854775807",
+        )
+        .map(|ns| PyLTime(LTime::from_nanos(ns)))
+    }
+
+    /// For pickle and `copy`: `LTime.from_nanos(nanos)`.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (i64,))> {
+        Ok((
+            slf.get_type().getattr("from_nanos")?,
+            (slf.get().0.as_nanos(),),
+        ))
+    }
+
+    /// The duration in nanoseconds.
+    #[getter]
+    fn nanos(&self) -> i64 {
+        self.0.as_nanos()
+    }
+
+    fn __str__(&self) -> String {
+        self.0.to_string()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("LTime.parse({:?})", self.0.to_string())
+    }
+}
+
 /// The preset of an S5 counter, 0..=999 (`C#n`).
 ///
 /// >>> from plc_timers import CounterPreset
@@ -221,6 +282,7 @@ impl PyCounterPreset {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyS5Time>()?;
     m.add_class::<PyTime>()?;
+    m.add_class::<PyLTime>()?;
     m.add_class::<PyCounterPreset>()?;
     Ok(())
 }
