@@ -5,7 +5,7 @@
 //! - [`Time`]: signed 32-bit milliseconds with `T#…` literals (S7-1200 manual, TIME data type).
 //! - [`LTime`]: signed 64-bit nanoseconds with `LT#…` literals (S7-1500, LTIME data type).
 //! - [`CpuTime`]: the CPU's clock, the one time argument every timer takes, its unit in its
-//!   type ([`unit`]: [`Millis`], [`Nanos`]);
+//!   type ([`mod@unit`]: [`Millis`], [`Nanos`]);
 //!   [`clock::ClockWord`]: the wrapping clock word the IEC timers compute with.
 //! - [`LiteralError`]: what was wrong with a literal, and where.
 //!
