@@ -64,6 +64,7 @@
 #![allow(non_camel_case_types)]
 
 pub mod counters;
+mod export;
 pub mod literal;
 pub mod memory;
 pub mod status;
