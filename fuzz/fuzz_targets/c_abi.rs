@@ -213,6 +213,28 @@ fuzz_target!(|data: &[u8]| {
             exercise(so, input, norm, |s, i, o| unsafe {
                 plc_timers_iec_timer_call(s, kind, now, i, o)
             });
+            // The same on LTIME (IEC_LTIMER), from the bytes after the TIME ones (so that the
+            // inputs of the corpus keep their meaning above).
+            let pt_ns = b.u64() as i64;
+            let input = plc_timers_iec_ltime_input {
+                r#in: raw[0],
+                r: raw[1],
+                pt_ns,
+            };
+            let norm = plc_timers_iec_ltime_input {
+                r#in: one(raw[0]),
+                r: one(raw[1]),
+                pt_ns,
+            };
+            let (sr, so): (plc_timers_iec_ltimer_ref, plc_timers_iec_ltimer) =
+                (from_bytes(&mut b), from_bytes(&mut b));
+            // SAFETY: valid pointers to local values.
+            exercise(sr, input, norm, |s, i, o| unsafe {
+                plc_timers_iec_ltimer_ref_call(s, kind, now, i, o)
+            });
+            exercise(so, input, norm, |s, i, o| unsafe {
+                plc_timers_iec_ltimer_call(s, kind, now, i, o)
+            });
         }
         2 => {
             // The IEC timers' structure operations; RUN-STOP-RUN's flag is a byte.
@@ -255,6 +277,46 @@ fuzz_target!(|data: &[u8]| {
                     });
                     exercise(so, retentive, n, |s, r, _: &mut ()| unsafe {
                         plc_timers_iec_timer_run_stop_run(s, r)
+                    });
+                }
+            }
+            // The same operations on LTIME (IEC_LTIMER), from the bytes after the TIME ones.
+            let pt_ns = b.u64() as i64;
+            let (sr, so): (plc_timers_iec_ltimer_ref, plc_timers_iec_ltimer) =
+                (from_bytes(&mut b), from_bytes(&mut b));
+            // SAFETY (every closure): valid pointers to local values.
+            match op % 4 {
+                0 => {
+                    exercise(sr, (), (), |s, (), o: &mut u64| unsafe {
+                        plc_timers_iec_ltimer_ref_read_et(s, now, o)
+                    });
+                    exercise(so, (), (), |s, (), o: &mut bool| unsafe {
+                        plc_timers_iec_ltimer_read_q(s, now, o)
+                    });
+                }
+                1 => {
+                    exercise(sr, (), (), |s, (), _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_ref_reset(s)
+                    });
+                    exercise(so, (), (), |s, (), _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_reset(s)
+                    });
+                }
+                2 => {
+                    exercise(sr, (), (), |s, (), _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_ref_preset(s, pt_ns)
+                    });
+                    exercise(so, (), (), |s, (), _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_preset(s, pt_ns)
+                    });
+                }
+                _ => {
+                    let n = one(retentive);
+                    exercise(sr, retentive, n, |s, r, _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_ref_run_stop_run(s, r)
+                    });
+                    exercise(so, retentive, n, |s, r, _: &mut ()| unsafe {
+                        plc_timers_iec_ltimer_run_stop_run(s, r)
                     });
                 }
             }

@@ -265,9 +265,71 @@ impl IecTimer {
             zero: [bytes[13], bytes[14], bytes[15]],
             unit: PhantomData,
         };
-        let valid =
-            t.zero == [0, 0, 0] && t.flags() & !flag::ALL == 0 && t.abstraction().is_valid();
-        valid.then_some(t)
+        t.checked()
+    }
+}
+
+impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
+    /// `self` if it is a state the operations can reach (the check of `from_bytes`): no flag
+    /// bit outside IN, Q, RUNNING and the kind, ET at most PT, no START kept by a stopped
+    /// timer, zero padding.
+    fn checked(self) -> Option<IecTimerOf<C, D>> {
+        let valid = self.zero == [0, 0, 0]
+            && self.flags() & !flag::ALL == 0
+            && self.abstraction().is_valid();
+        valid.then_some(self)
+    }
+}
+
+impl IecLTimer {
+    /// The 32 bytes of the structure in its memory layout (native byte order): START, PT, ET
+    /// (8 bytes each), the flag byte, seven zero bytes (three zero members and the padding to
+    /// the 8-byte alignment). For saving a retentive structure.
+    ///
+    /// ```
+    /// use plc_timers::iec::{IecInput, IecKind, IecLTimer, IecTimerOps};
+    /// use plc_timers::time::CpuTime;
+    /// let mut t = IecLTimer::new();
+    /// t.call(IecKind::Ton, CpuTime::from_nanos(7), IecInput::new(true, plc_timers::ltime!("LT#1S")));
+    /// assert_eq!(IecLTimer::from_bytes(t.to_bytes()), Some(t));
+    /// ```
+    pub fn to_bytes(&self) -> [u8; 32] {
+        let mut b = [0u8; 32];
+        b[0..8].copy_from_slice(&self.start.to_ne_bytes());
+        b[8..16].copy_from_slice(&self.pt.to_ne_bytes());
+        b[16..24].copy_from_slice(&self.et.to_ne_bytes());
+        b[24] = self.flag_byte;
+        b
+    }
+
+    /// The structure saved in `bytes` by [`IecLTimer::to_bytes`], or `None` when the bytes are
+    /// not a state the operations can reach (as [`IecTimer::from_bytes`]; the padding too must
+    /// be 0).
+    ///
+    /// ```
+    /// use plc_timers::iec::IecLTimer;
+    /// let mut bytes = IecLTimer::new().to_bytes();
+    /// bytes[31] = 1; // padding
+    /// assert!(IecLTimer::from_bytes(bytes).is_none());
+    /// ```
+    pub fn from_bytes(bytes: [u8; 32]) -> Option<IecLTimer> {
+        let word = |i: usize| {
+            let mut w = [0u8; 8];
+            w.copy_from_slice(&bytes[i..i + 8]);
+            u64::from_ne_bytes(w)
+        };
+        if bytes[28..32] != [0, 0, 0, 0] {
+            return None;
+        }
+        IecTimerOf {
+            start: word(0),
+            pt: word(8),
+            et: word(16),
+            flag_byte: bytes[24],
+            zero: [bytes[25], bytes[26], bytes[27]],
+            unit: PhantomData,
+        }
+        .checked()
     }
 }
 

@@ -3,20 +3,21 @@
 //!
 //! The IEC counters' structs are generic here and monomorphic in C: cbindgen writes one struct
 //! per integer type (`plc_timers_counter_input_int16_t`, …) and the type names of the manual
-//! as typedefs (`plc_timers_counter_int_input` for INT, …). The functions are written out per
-//! type (C has no generics, and cbindgen does not expand macros); each is one line that calls
-//! the generic body.
+//! as typedefs (`plc_timers_counter_int_input` for INT, …). The functions are registered per
+//! type by one line (`iec_counter!`) on the generic bodies of `export` (C has no generics;
+//! cbindgen reads the crate macro-expanded).
 
+use plc_timers::block::BlockOps;
 use plc_timers::counter::s5::{
-    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
-    S5CounterState,
+    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterRef, S5CounterState,
 };
 use plc_timers::counter::{
-    Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterRef, CounterState,
+    Counter, CounterInput, CounterInt, CounterKind, CounterOutput, CounterRef, CounterState,
 };
 
+use crate::export::{export, CInput, CKind};
 use crate::status::plc_timers_status::{self, *};
-use crate::{bit, flag, init, on_state, Mirror};
+use crate::{bit, flag, Mirror};
 
 // ---------------------------------------------------------------------------------------------
 // IEC counters
@@ -33,14 +34,15 @@ pub enum plc_timers_counter_kind {
     PLC_TIMERS_CTUD = 2,
 }
 
-/// The IEC counter kind `kind` stands for.
-fn counter_kind(kind: i32) -> Result<CounterKind, plc_timers_status> {
-    Ok(match kind {
-        0 => CounterKind::Ctu,
-        1 => CounterKind::Ctd,
-        2 => CounterKind::Ctud,
-        _ => return Err(PLC_TIMERS_INVALID_KIND),
-    })
+impl CKind for CounterKind {
+    fn from_c(kind: i32) -> Result<CounterKind, plc_timers_status> {
+        Ok(match kind {
+            0 => CounterKind::Ctu,
+            1 => CounterKind::Ctd,
+            2 => CounterKind::Ctud,
+            _ => return Err(PLC_TIMERS_INVALID_KIND),
+        })
+    }
 }
 
 /// The inputs of one call of an IEC counter over the integer type `T`. The inputs an
@@ -166,38 +168,25 @@ impl<T: CounterInt> Mirror for plc_timers_counter<T> {
     }
 }
 
-/// The IEC counter call on either form and any integer type, through the family's interface.
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-unsafe fn counter_call<M: Mirror, T: CounterInt>(
-    counter: *mut M,
-    kind: i32,
-    input: plc_timers_counter_input<T>,
-    out: *mut plc_timers_counter_output<T>,
-) -> plc_timers_status
-where
-    M::Core: CounterOps<T>,
-{
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state(counter, out, |c| {
-            let kind = counter_kind(kind)?;
-            let i = input;
-            let input = CounterInput {
-                cu: bit(i.cu),
-                cd: bit(i.cd),
-                r: bit(i.r),
-                ld: bit(i.ld),
-                pv: i.pv,
-            };
-            let o = c.call(kind, input);
-            Ok(plc_timers_counter_output {
-                qu: o.qu,
-                qd: o.qd,
-                cv: o.cv,
-            })
+impl<T: CounterInt> CInput<CounterInput<T>> for plc_timers_counter_input<T> {
+    fn load(self) -> Result<CounterInput<T>, plc_timers_status> {
+        Ok(CounterInput {
+            cu: bit(self.cu),
+            cd: bit(self.cd),
+            r: bit(self.r),
+            ld: bit(self.ld),
+            pv: self.pv,
         })
+    }
+}
+
+impl<T: CounterInt> From<CounterOutput<T>> for plc_timers_counter_output<T> {
+    fn from(o: CounterOutput<T>) -> Self {
+        plc_timers_counter_output {
+            qu: o.qu,
+            qd: o.qd,
+            cv: o.cv,
+        }
     }
 }
 
@@ -224,6 +213,12 @@ pub(crate) fn s5_counter_kind(kind: i32) -> Result<S5CounterKind, plc_timers_sta
         2 => S5CounterKind::SCud,
         _ => return Err(PLC_TIMERS_INVALID_KIND),
     })
+}
+
+impl CKind for S5CounterKind {
+    fn from_c(kind: i32) -> Result<S5CounterKind, plc_timers_status> {
+        s5_counter_kind(kind)
+    }
 }
 
 /// An S5 counter value or preset in binary: the count itself, 0 to 999 (`C#5` is 5, `C#123`
@@ -289,13 +284,7 @@ pub struct plc_timers_s5_counter_input_bcd {
     pub pv_bcd: plc_timers_bcd_word,
 }
 
-/// An S5 counter input struct of C: the preset in one representation, checked on load.
-pub(crate) trait S5CounterInputC: Copy {
-    /// The library's inputs, or the status of a preset that is not one.
-    fn load(self) -> Result<S5CounterInput, plc_timers_status>;
-}
-
-impl S5CounterInputC for plc_timers_s5_counter_input {
+impl CInput<S5CounterInput> for plc_timers_s5_counter_input {
     fn load(self) -> Result<S5CounterInput, plc_timers_status> {
         Ok(S5CounterInput {
             cu: bit(self.cu),
@@ -308,7 +297,7 @@ impl S5CounterInputC for plc_timers_s5_counter_input {
     }
 }
 
-impl S5CounterInputC for plc_timers_s5_counter_input_bcd {
+impl CInput<S5CounterInput> for plc_timers_s5_counter_input_bcd {
     fn load(self) -> Result<S5CounterInput, plc_timers_status> {
         Ok(S5CounterInput {
             cu: bit(self.cu),
@@ -422,767 +411,107 @@ const _: () = assert!(
     core::mem::size_of::<plc_timers_counter<u64>>() == core::mem::size_of::<Counter<u64>>()
 );
 
-/// The S5 counter call on either form, through the family's interface.
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-unsafe fn s5_counter_call<M: Mirror>(
-    counter: *mut M,
-    kind: i32,
-    input: impl S5CounterInputC,
-    out: *mut plc_timers_s5_counter_output,
-) -> plc_timers_status
-where
-    M::Core: S5CounterOps,
-{
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state(counter, out, |c| {
-            let kind = s5_counter_kind(kind)?;
-            let input = input.load()?;
-            Ok(c.call(kind, input).into())
-        })
-    }
+// ---------------------------------------------------------------------------------------------
+// The IEC counters per integer type: one line each, registering the four functions and naming
+// the four structs after the manual's type
+
+/// The typedefs and the functions of the IEC counters over one integer type: the manual's name
+/// of the type, its Rust type, the four typedef names and the four function names.
+macro_rules! iec_counter {
+    ($t:literal $int:ty: $input:ident $output:ident $sref:ident $sopt:ident, $ref_init:ident $init:ident $ref_call:ident $call:ident) => {
+        #[doc = concat!(" The inputs of an IEC counter of type ", $t, " (`", stringify!($int), "` in Rust).")]
+        pub type $input = plc_timers_counter_input<$int>;
+        #[doc = concat!(" The outputs of an IEC counter of type ", $t, ".")]
+        pub type $output = plc_timers_counter_output<$int>;
+        #[doc = concat!(" The state of an IEC counter of type ", $t, ", reference form.")]
+        pub type $sref = plc_timers_counter_ref<$int>;
+        #[doc = concat!(" The state of an IEC counter of type ", $t, ", optimized form.")]
+        pub type $sopt = plc_timers_counter<$int>;
+        export!(
+            #[doc = concat!(" Initializes an IEC counter of type ", $t, " (reference form): CV = 0, no edge seen (the same as zeroing the struct).")]
+            init $ref_init(counter: $sref)
+        );
+        export!(
+            #[doc = concat!(" Initializes an IEC counter of type ", $t, " (optimized form): CV = 0, no edge seen (the same as zeroing the struct).")]
+            init $init(counter: $sopt)
+        );
+        export!(
+            #[doc = concat!(" One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of type ", $t, ", by the reference semantics: edges of CU and CD, then R before LD before counting; CV stays at the type's limits. The outputs are written to `out`.")]
+            ///
+            /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+            /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+            call $ref_call(counter: $sref, kind, input: $input, out: $output)
+        );
+        export!(
+            #[doc = concat!(" One call of the IEC counter instruction `kind` on a counter of type ", $t, ", by the optimized implementation: the same as `", stringify!($ref_call), "`.")]
+            ///
+            /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+            /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
+            call $call(counter: $sopt, kind, input: $input, out: $output)
+        );
+    };
 }
+
+iec_counter!("SINT" i8: plc_timers_counter_sint_input plc_timers_counter_sint_output plc_timers_counter_sint_ref plc_timers_counter_sint, plc_timers_counter_sint_ref_init plc_timers_counter_sint_init plc_timers_counter_sint_ref_call plc_timers_counter_sint_call);
+iec_counter!("INT" i16: plc_timers_counter_int_input plc_timers_counter_int_output plc_timers_counter_int_ref plc_timers_counter_int, plc_timers_counter_int_ref_init plc_timers_counter_int_init plc_timers_counter_int_ref_call plc_timers_counter_int_call);
+iec_counter!("DINT" i32: plc_timers_counter_dint_input plc_timers_counter_dint_output plc_timers_counter_dint_ref plc_timers_counter_dint, plc_timers_counter_dint_ref_init plc_timers_counter_dint_init plc_timers_counter_dint_ref_call plc_timers_counter_dint_call);
+iec_counter!("LINT" i64: plc_timers_counter_lint_input plc_timers_counter_lint_output plc_timers_counter_lint_ref plc_timers_counter_lint, plc_timers_counter_lint_ref_init plc_timers_counter_lint_init plc_timers_counter_lint_ref_call plc_timers_counter_lint_call);
+iec_counter!("USINT" u8: plc_timers_counter_usint_input plc_timers_counter_usint_output plc_timers_counter_usint_ref plc_timers_counter_usint, plc_timers_counter_usint_ref_init plc_timers_counter_usint_init plc_timers_counter_usint_ref_call plc_timers_counter_usint_call);
+iec_counter!("UINT" u16: plc_timers_counter_uint_input plc_timers_counter_uint_output plc_timers_counter_uint_ref plc_timers_counter_uint, plc_timers_counter_uint_ref_init plc_timers_counter_uint_init plc_timers_counter_uint_ref_call plc_timers_counter_uint_call);
+iec_counter!("UDINT" u32: plc_timers_counter_udint_input plc_timers_counter_udint_output plc_timers_counter_udint_ref plc_timers_counter_udint, plc_timers_counter_udint_ref_init plc_timers_counter_udint_init plc_timers_counter_udint_ref_call plc_timers_counter_udint_call);
+iec_counter!("ULINT" u64: plc_timers_counter_ulint_input plc_timers_counter_ulint_output plc_timers_counter_ulint_ref plc_timers_counter_ulint, plc_timers_counter_ulint_ref_init plc_timers_counter_ulint_init plc_timers_counter_ulint_ref_call plc_timers_counter_ulint_call);
 
 // ---------------------------------------------------------------------------------------------
-// The IEC counters per integer type (one line each over the generic bodies above)
+// The S5 counters
 
-/// The inputs of an IEC counter of type SINT (`i8` in Rust).
-pub type plc_timers_counter_sint_input = plc_timers_counter_input<i8>;
-/// The outputs of an IEC counter of type SINT.
-pub type plc_timers_counter_sint_output = plc_timers_counter_output<i8>;
-/// The state of an IEC counter of type SINT, reference form.
-pub type plc_timers_counter_sint_ref = plc_timers_counter_ref<i8>;
-/// The state of an IEC counter of type SINT, optimized form.
-pub type plc_timers_counter_sint = plc_timers_counter<i8>;
-
-/// Initializes an IEC counter of type SINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_sint_ref_init(
-    counter: *mut plc_timers_counter_sint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type SINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_sint_init(
-    counter: *mut plc_timers_counter_sint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type SINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_sint_ref_call(
-    counter: *mut plc_timers_counter_sint_ref,
-    kind: i32,
-    input: plc_timers_counter_sint_input,
-    out: *mut plc_timers_counter_sint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type SINT, by the optimized
-/// implementation: the same as `plc_timers_counter_sint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_sint_call(
-    counter: *mut plc_timers_counter_sint,
-    kind: i32,
-    input: plc_timers_counter_sint_input,
-    out: *mut plc_timers_counter_sint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type INT (`i16` in Rust).
-pub type plc_timers_counter_int_input = plc_timers_counter_input<i16>;
-/// The outputs of an IEC counter of type INT.
-pub type plc_timers_counter_int_output = plc_timers_counter_output<i16>;
-/// The state of an IEC counter of type INT, reference form.
-pub type plc_timers_counter_int_ref = plc_timers_counter_ref<i16>;
-/// The state of an IEC counter of type INT, optimized form.
-pub type plc_timers_counter_int = plc_timers_counter<i16>;
-
-/// Initializes an IEC counter of type INT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_int_ref_init(
-    counter: *mut plc_timers_counter_int_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type INT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_int_init(
-    counter: *mut plc_timers_counter_int,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type INT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_int_ref_call(
-    counter: *mut plc_timers_counter_int_ref,
-    kind: i32,
-    input: plc_timers_counter_int_input,
-    out: *mut plc_timers_counter_int_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type INT, by the optimized
-/// implementation: the same as `plc_timers_counter_int_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_int_call(
-    counter: *mut plc_timers_counter_int,
-    kind: i32,
-    input: plc_timers_counter_int_input,
-    out: *mut plc_timers_counter_int_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type DINT (`i32` in Rust).
-pub type plc_timers_counter_dint_input = plc_timers_counter_input<i32>;
-/// The outputs of an IEC counter of type DINT.
-pub type plc_timers_counter_dint_output = plc_timers_counter_output<i32>;
-/// The state of an IEC counter of type DINT, reference form.
-pub type plc_timers_counter_dint_ref = plc_timers_counter_ref<i32>;
-/// The state of an IEC counter of type DINT, optimized form.
-pub type plc_timers_counter_dint = plc_timers_counter<i32>;
-
-/// Initializes an IEC counter of type DINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_dint_ref_init(
-    counter: *mut plc_timers_counter_dint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type DINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_dint_init(
-    counter: *mut plc_timers_counter_dint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type DINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_dint_ref_call(
-    counter: *mut plc_timers_counter_dint_ref,
-    kind: i32,
-    input: plc_timers_counter_dint_input,
-    out: *mut plc_timers_counter_dint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type DINT, by the optimized
-/// implementation: the same as `plc_timers_counter_dint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_dint_call(
-    counter: *mut plc_timers_counter_dint,
-    kind: i32,
-    input: plc_timers_counter_dint_input,
-    out: *mut plc_timers_counter_dint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type LINT (`i64` in Rust).
-pub type plc_timers_counter_lint_input = plc_timers_counter_input<i64>;
-/// The outputs of an IEC counter of type LINT.
-pub type plc_timers_counter_lint_output = plc_timers_counter_output<i64>;
-/// The state of an IEC counter of type LINT, reference form.
-pub type plc_timers_counter_lint_ref = plc_timers_counter_ref<i64>;
-/// The state of an IEC counter of type LINT, optimized form.
-pub type plc_timers_counter_lint = plc_timers_counter<i64>;
-
-/// Initializes an IEC counter of type LINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_lint_ref_init(
-    counter: *mut plc_timers_counter_lint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type LINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_lint_init(
-    counter: *mut plc_timers_counter_lint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type LINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_lint_ref_call(
-    counter: *mut plc_timers_counter_lint_ref,
-    kind: i32,
-    input: plc_timers_counter_lint_input,
-    out: *mut plc_timers_counter_lint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type LINT, by the optimized
-/// implementation: the same as `plc_timers_counter_lint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_lint_call(
-    counter: *mut plc_timers_counter_lint,
-    kind: i32,
-    input: plc_timers_counter_lint_input,
-    out: *mut plc_timers_counter_lint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type USINT (`u8` in Rust).
-pub type plc_timers_counter_usint_input = plc_timers_counter_input<u8>;
-/// The outputs of an IEC counter of type USINT.
-pub type plc_timers_counter_usint_output = plc_timers_counter_output<u8>;
-/// The state of an IEC counter of type USINT, reference form.
-pub type plc_timers_counter_usint_ref = plc_timers_counter_ref<u8>;
-/// The state of an IEC counter of type USINT, optimized form.
-pub type plc_timers_counter_usint = plc_timers_counter<u8>;
-
-/// Initializes an IEC counter of type USINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_usint_ref_init(
-    counter: *mut plc_timers_counter_usint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type USINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_usint_init(
-    counter: *mut plc_timers_counter_usint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type USINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_usint_ref_call(
-    counter: *mut plc_timers_counter_usint_ref,
-    kind: i32,
-    input: plc_timers_counter_usint_input,
-    out: *mut plc_timers_counter_usint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type USINT, by the optimized
-/// implementation: the same as `plc_timers_counter_usint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_usint_call(
-    counter: *mut plc_timers_counter_usint,
-    kind: i32,
-    input: plc_timers_counter_usint_input,
-    out: *mut plc_timers_counter_usint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type UINT (`u16` in Rust).
-pub type plc_timers_counter_uint_input = plc_timers_counter_input<u16>;
-/// The outputs of an IEC counter of type UINT.
-pub type plc_timers_counter_uint_output = plc_timers_counter_output<u16>;
-/// The state of an IEC counter of type UINT, reference form.
-pub type plc_timers_counter_uint_ref = plc_timers_counter_ref<u16>;
-/// The state of an IEC counter of type UINT, optimized form.
-pub type plc_timers_counter_uint = plc_timers_counter<u16>;
-
-/// Initializes an IEC counter of type UINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_uint_ref_init(
-    counter: *mut plc_timers_counter_uint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type UINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_uint_init(
-    counter: *mut plc_timers_counter_uint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type UINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_uint_ref_call(
-    counter: *mut plc_timers_counter_uint_ref,
-    kind: i32,
-    input: plc_timers_counter_uint_input,
-    out: *mut plc_timers_counter_uint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type UINT, by the optimized
-/// implementation: the same as `plc_timers_counter_uint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_uint_call(
-    counter: *mut plc_timers_counter_uint,
-    kind: i32,
-    input: plc_timers_counter_uint_input,
-    out: *mut plc_timers_counter_uint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type UDINT (`u32` in Rust).
-pub type plc_timers_counter_udint_input = plc_timers_counter_input<u32>;
-/// The outputs of an IEC counter of type UDINT.
-pub type plc_timers_counter_udint_output = plc_timers_counter_output<u32>;
-/// The state of an IEC counter of type UDINT, reference form.
-pub type plc_timers_counter_udint_ref = plc_timers_counter_ref<u32>;
-/// The state of an IEC counter of type UDINT, optimized form.
-pub type plc_timers_counter_udint = plc_timers_counter<u32>;
-
-/// Initializes an IEC counter of type UDINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_udint_ref_init(
-    counter: *mut plc_timers_counter_udint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type UDINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_udint_init(
-    counter: *mut plc_timers_counter_udint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type UDINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_udint_ref_call(
-    counter: *mut plc_timers_counter_udint_ref,
-    kind: i32,
-    input: plc_timers_counter_udint_input,
-    out: *mut plc_timers_counter_udint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type UDINT, by the optimized
-/// implementation: the same as `plc_timers_counter_udint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_udint_call(
-    counter: *mut plc_timers_counter_udint,
-    kind: i32,
-    input: plc_timers_counter_udint_input,
-    out: *mut plc_timers_counter_udint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// The inputs of an IEC counter of type ULINT (`u64` in Rust).
-pub type plc_timers_counter_ulint_input = plc_timers_counter_input<u64>;
-/// The outputs of an IEC counter of type ULINT.
-pub type plc_timers_counter_ulint_output = plc_timers_counter_output<u64>;
-/// The state of an IEC counter of type ULINT, reference form.
-pub type plc_timers_counter_ulint_ref = plc_timers_counter_ref<u64>;
-/// The state of an IEC counter of type ULINT, optimized form.
-pub type plc_timers_counter_ulint = plc_timers_counter<u64>;
-
-/// Initializes an IEC counter of type ULINT (reference form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_ulint_ref_init(
-    counter: *mut plc_timers_counter_ulint_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, CounterRef::new()) }
-}
-
-/// Initializes an IEC counter of type ULINT (optimized form): CV = 0, no edge seen (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_ulint_init(
-    counter: *mut plc_timers_counter_ulint,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, Counter::new()) }
-}
-
-/// One call of the IEC counter instruction `kind` (`plc_timers_counter_kind`) on a counter of
-/// type ULINT, by the reference semantics: edges of CU and CD, then R before LD before counting;
-/// CV stays at the type's limits. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_ulint_ref_call(
-    counter: *mut plc_timers_counter_ulint_ref,
-    kind: i32,
-    input: plc_timers_counter_ulint_input,
-    out: *mut plc_timers_counter_ulint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// One call of the IEC counter instruction `kind` on a counter of type ULINT, by the optimized
-/// implementation: the same as `plc_timers_counter_ulint_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_counter_ulint_call(
-    counter: *mut plc_timers_counter_ulint,
-    kind: i32,
-    input: plc_timers_counter_ulint_input,
-    out: *mut plc_timers_counter_ulint_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { counter_call(counter, kind, input, out) }
-}
-
-/// Initializes an S5 counter (reference form): CV = 0, edge memories 0 (the same as zeroing the
-/// struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_ref_init(
-    counter: *mut plc_timers_s5_counter_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, S5CounterRef::new()) }
-}
-
-/// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the reference
-/// semantics: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
-/// stays in 0 to 999. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
-/// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_ref_call(
-    counter: *mut plc_timers_s5_counter_ref,
-    kind: i32,
-    input: plc_timers_s5_counter_input,
-    out: *mut plc_timers_s5_counter_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_counter_call(counter, kind, input, out) }
-}
-
-/// Initializes an S5 counter (optimized form): CV = 0, edge memories 0 (the same as zeroing the
-/// struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `counter` is NULL or points to writable memory for its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_init(
-    counter: *mut plc_timers_s5_counter,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(counter, S5Counter::new()) }
-}
-
-/// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the optimized
-/// implementation: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
-/// stays in 0 to 999. The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
-/// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_call(
-    counter: *mut plc_timers_s5_counter,
-    kind: i32,
-    input: plc_timers_s5_counter_input,
-    out: *mut plc_timers_s5_counter_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_counter_call(counter, kind, input, out) }
-}
-
-/// `plc_timers_s5_counter_ref_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
-/// holds `C#n`).
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
-/// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_ref_call_bcd(
-    counter: *mut plc_timers_s5_counter_ref,
-    kind: i32,
-    input: plc_timers_s5_counter_input_bcd,
-    out: *mut plc_timers_s5_counter_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_counter_call(counter, kind, input, out) }
-}
-
-/// `plc_timers_s5_counter_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
-/// holds `C#n`).
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
-/// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
-///
-/// # Safety
-/// `counter` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_counter_call_bcd(
-    counter: *mut plc_timers_s5_counter,
-    kind: i32,
-    input: plc_timers_s5_counter_input_bcd,
-    out: *mut plc_timers_s5_counter_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_counter_call(counter, kind, input, out) }
-}
+export!(
+    /// Initializes an S5 counter (reference form): CV = 0, edge memories 0 (the same as zeroing
+    /// the struct).
+    init plc_timers_s5_counter_ref_init(counter: plc_timers_s5_counter_ref)
+);
+export!(
+    /// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the reference
+    /// semantics: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
+    /// stays in 0 to 999. The outputs are written to `out`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
+    /// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+    call plc_timers_s5_counter_ref_call(counter: plc_timers_s5_counter_ref, kind, input: plc_timers_s5_counter_input, out: plc_timers_s5_counter_output)
+);
+export!(
+    /// Initializes an S5 counter (optimized form): CV = 0, edge memories 0 (the same as zeroing
+    /// the struct).
+    init plc_timers_s5_counter_init(counter: plc_timers_s5_counter)
+);
+export!(
+    /// One call of the S5 counter box `kind` (`plc_timers_s5_counter_kind`), by the optimized
+    /// implementation: `FR`, `CU`, `CD`, `S`, `R` in the order the box compiles to STL; CV
+    /// stays in 0 to 999. The outputs are written to `out`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_PRESET` (`input.pv`
+    /// above 999); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+    call plc_timers_s5_counter_call(counter: plc_timers_s5_counter, kind, input: plc_timers_s5_counter_input, out: plc_timers_s5_counter_output)
+);
+export!(
+    /// `plc_timers_s5_counter_ref_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+    /// holds `C#n`).
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+    /// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+    call plc_timers_s5_counter_ref_call_bcd(counter: plc_timers_s5_counter_ref, kind, input: plc_timers_s5_counter_input_bcd, out: plc_timers_s5_counter_output)
+);
+export!(
+    /// `plc_timers_s5_counter_call` with the preset as a BCD word (`input.pv_bcd`, as the PLC
+    /// holds `C#n`).
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`counter` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_BCD_PRESET`
+    /// (`input.pv_bcd`); `PLC_TIMERS_INVALID_STATE` (`*counter`).
+    call plc_timers_s5_counter_call_bcd(counter: plc_timers_s5_counter, kind, input: plc_timers_s5_counter_input_bcd, out: plc_timers_s5_counter_output)
+);
 
 /// The count of the S5 counter preset BCD word `pv_bcd` (`C#123`, held as `W#16#0123`, gives
 /// 123), written to `count`: the one conversion between the two representations, checked.

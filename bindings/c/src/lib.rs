@@ -64,6 +64,7 @@
 #![allow(non_camel_case_types)]
 
 pub mod counters;
+mod export;
 pub mod literal;
 pub mod memory;
 pub mod status;
@@ -282,6 +283,42 @@ mod tests {
                 + PLC_TIMERS_VERSION_PATCH
         );
         assert_eq!(crate::plc_timers_version(), PLC_TIMERS_VERSION);
+    }
+
+    /// `plc_timers_iec_ltimer` holds the bytes of the library's `IecLTimer` (LTIMER-STRUCT-01:
+    /// the header's struct is the structure's memory layout), and loads back to it, in every
+    /// phase of a TON and a TONR on LTIME.
+    #[test]
+    fn ltimer_struct_is_the_librarys_structure() {
+        use crate::timers::plc_timers_iec_ltimer;
+        use crate::Mirror;
+        use plc_timers::iec::{IecInput, IecKind, IecLTimer, IecTimerOps};
+        use plc_timers::time::{CpuTime, LTime};
+        let pt = LTime::from_nanos(1_000_000_007);
+        for kind in [IecKind::Ton, IecKind::Tonr] {
+            let mut t = IecLTimer::new();
+            for (now, on) in [
+                (5, true),
+                (400_000_000, true),
+                (2_000_000_000, true),
+                (2_000_000_001, false),
+            ] {
+                t.call(kind, CpuTime::from_nanos(now), IecInput::new(on, pt));
+                let c = plc_timers_iec_ltimer::store(&t);
+                // SAFETY: the struct is 32 bytes without padding (3 x u64, u8, [u8; 7]).
+                let bytes: [u8; 32] = unsafe { core::mem::transmute(c) };
+                assert_eq!(
+                    bytes,
+                    t.to_bytes(),
+                    "LTIMER-STRUCT-01: the library's bytes at {now} ns"
+                );
+                assert_eq!(
+                    c.load(),
+                    Some(t),
+                    "LTIMER-STRUCT-01: loads back at {now} ns"
+                );
+            }
+        }
     }
 
     /// A misaligned pointer (which C cannot form without undefined behaviour, so the C tests

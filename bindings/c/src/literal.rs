@@ -3,7 +3,7 @@
 use std::ffi::{c_char, CStr};
 
 use plc_timers::counter::s5::{CounterPreset, CounterPresetError};
-use plc_timers::time::{LiteralError, LiteralErrorKind, S5Time, Time};
+use plc_timers::time::{LTime, LiteralError, LiteralErrorKind, S5Time, Time};
 
 use crate::status::plc_timers_status::{self, *};
 use crate::{checked, checked_mut, guard};
@@ -126,6 +126,33 @@ pub unsafe extern "C" fn plc_timers_time_parse(
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.
     unsafe { parse_literal(text, millis, error_position, Time::parse, Time::as_millis) }
+}
+
+/// Parses an LTIME literal: `LT#…` or `LTIME#…` (case-insensitive, underscores optional, an
+/// optional `-` after `#`, units D, H, M, S, MS, US, NS from largest to smallest, each at most
+/// once), or a whole number of nanoseconds with an optional sign. The range is
+/// -9223372036854775808 to 9223372036854775807 ns (`LT#-106751D_23H_47M_16S_854MS_775US_808NS`
+/// to `LT#106751D_23H_47M_16S_854MS_775US_807NS`). `text` is NUL-terminated.
+///
+/// On success writes the duration in ns to `nanos` (as `plc_timers_iec_ltime_input.pt_ns`
+/// takes it). On a literal error writes the byte offset in `text` where the problem was found to
+/// `error_position`, unless that is NULL.
+///
+/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`text`
+/// or `nanos`; `error_position` may be NULL); a `PLC_TIMERS_LITERAL_*` code saying what was
+/// wrong.
+///
+/// # Safety
+/// `text` is NULL or a NUL-terminated string; `nanos` and `error_position` are NULL or point to
+/// memory valid for writes of their types.
+#[no_mangle]
+pub unsafe extern "C" fn plc_timers_ltime_parse(
+    text: *const c_char,
+    nanos: *mut i64,
+    error_position: *mut usize,
+) -> plc_timers_status {
+    // SAFETY: the caller's contract.
+    unsafe { parse_literal(text, nanos, error_position, LTime::parse, LTime::as_nanos) }
 }
 
 /// Parses an S5 counter preset: `C#n` (n decimal, 0 to 999), a whole number 0 to 999, or a BCD

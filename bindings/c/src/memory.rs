@@ -6,15 +6,16 @@
 //! call checks the whole area (every word a valid state) before it acts, so one corrupted word
 //! is reported as `PLC_TIMERS_INVALID_STATE` by any operation on the area.
 
-use plc_timers::counter::s5::{CounterMemory, S5Counter};
+use plc_timers::counter::s5::{CounterMemory, S5Counter, S5CounterInput};
 use plc_timers::s5::{TimerMemory, TimerWord};
 use plc_timers::time::CpuTime;
 
 use crate::counters::{
     counter_preset, counter_preset_bcd, plc_timers_bcd_word, plc_timers_s5_count,
     plc_timers_s5_counter_input, plc_timers_s5_counter_input_bcd, plc_timers_s5_counter_output,
-    s5_counter_kind, S5CounterInputC,
+    s5_counter_kind,
 };
+use crate::export::CInput;
 use crate::status::plc_timers_status::{self, *};
 use crate::timers::{plc_timers_s5_input, plc_timers_s5_output, s5_kind, s5time, time_base};
 use crate::{bit, init, on_state, on_state_only, read_state, Mirror};
@@ -538,7 +539,7 @@ unsafe fn counter_memory_call(
     counters: *mut plc_timers_counter_memory,
     index: usize,
     kind: i32,
-    input: impl S5CounterInputC,
+    input: impl CInput<S5CounterInput>,
     out: *mut plc_timers_s5_counter_output,
 ) -> plc_timers_status {
     // SAFETY: the caller's contract.

@@ -1,12 +1,16 @@
-//! The timers: S5 timers (`S_PULSE` … `S_OFFDT`) and IEC timers (`TP`, `TON`, `TOF`, `TONR`),
-//! each in its reference and its optimized form.
+//! The timers: S5 timers (`S_PULSE` … `S_OFFDT`) and IEC timers (`TP`, `TON`, `TOF`, `TONR`)
+//! on TIME (S7-1200 `IEC_TIMER`) and on LTIME (S7-1500 `IEC_LTIMER`), each in its reference
+//! and its optimized form. The C functions are registered on the bodies of `export`.
 
-use plc_timers::iec::{IecInput, IecKind, IecState, IecTimer, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerOps, S5TimerRef, TimerWord};
-use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
+use plc_timers::block::BlockOps;
+use plc_timers::iec::{IecInput, IecKind, IecLTimer, IecOutput, IecState, IecTimer, IecTimerRef};
+use plc_timers::s5::{S5Input, S5Kind, S5State, S5Timer, S5TimerRef, TimerWord};
+use plc_timers::time::clock::ClockWord;
+use plc_timers::time::{CpuTime, IecDuration, LTime, S5Time, Time, TimeBase};
 
+use crate::export::{export, CIecTimer, CInput, CKind};
 use crate::status::plc_timers_status::{self, *};
-use crate::{bit, flag, init, on_state, on_state_only, Mirror};
+use crate::{bit, flag, Mirror};
 
 // ---------------------------------------------------------------------------------------------
 // Kinds and inputs
@@ -67,6 +71,12 @@ pub(crate) fn s5_kind(kind: i32) -> Result<S5Kind, plc_timers_status> {
     })
 }
 
+impl CKind for S5Kind {
+    fn from_c(kind: i32) -> Result<S5Kind, plc_timers_status> {
+        s5_kind(kind)
+    }
+}
+
 /// The IEC timer kind `kind` stands for.
 fn iec_kind(kind: i32) -> Result<IecKind, plc_timers_status> {
     Ok(match kind {
@@ -76,6 +86,12 @@ fn iec_kind(kind: i32) -> Result<IecKind, plc_timers_status> {
         3 => IecKind::Tonr,
         _ => return Err(PLC_TIMERS_INVALID_KIND),
     })
+}
+
+impl CKind for IecKind {
+    fn from_c(kind: i32) -> Result<IecKind, plc_timers_status> {
+        iec_kind(kind)
+    }
 }
 
 /// The time base `base` stands for.
@@ -110,9 +126,8 @@ pub struct plc_timers_s5_input {
     pub tv: u16,
 }
 
-impl plc_timers_s5_input {
-    /// The library's inputs.
-    pub(crate) fn load(self) -> Result<S5Input, plc_timers_status> {
+impl CInput<S5Input> for plc_timers_s5_input {
+    fn load(self) -> Result<S5Input, plc_timers_status> {
         Ok(S5Input::new(bit(self.s), bit(self.r), s5time(self.tv)?).with_fr(bit(self.fr)))
     }
 }
@@ -152,9 +167,9 @@ pub struct plc_timers_iec_input {
     pub pt: i32,
 }
 
-impl From<plc_timers_iec_input> for IecInput {
-    fn from(i: plc_timers_iec_input) -> IecInput {
-        IecInput::new(bit(i.r#in), Time::from_millis(i.pt)).with_reset(bit(i.r))
+impl CInput<IecInput<Time>> for plc_timers_iec_input {
+    fn load(self) -> Result<IecInput<Time>, plc_timers_status> {
+        Ok(IecInput::new(bit(self.r#in), Time::from_millis(self.pt)).with_reset(bit(self.r)))
     }
 }
 
@@ -166,6 +181,50 @@ pub struct plc_timers_iec_output {
     pub q: bool,
     /// `ET`, the elapsed time in milliseconds, 0 to PT.
     pub et: u32,
+}
+
+impl From<IecOutput<u32>> for plc_timers_iec_output {
+    fn from(o: IecOutput<u32>) -> Self {
+        plc_timers_iec_output { q: o.q, et: o.et }
+    }
+}
+
+/// The inputs of one call of an IEC timer on LTIME (`TP_LTIME`, `TON_LTIME`, `TOF_LTIME`,
+/// `TONR_LTIME`). The input bits are bytes: 0 is FALSE, any other value TRUE.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_iec_ltime_input {
+    /// `IN` (0 FALSE, any other byte TRUE).
+    pub r#in: u8,
+    /// `R`, the reset of `TONR` (ignored by `TP`, `TON`, `TOF`; 0 FALSE, any other byte TRUE).
+    pub r: u8,
+    /// `PT`, the preset: an `LTIME` in nanoseconds; a negative value is taken as 0.
+    pub pt_ns: i64,
+}
+
+impl CInput<IecInput<LTime>> for plc_timers_iec_ltime_input {
+    fn load(self) -> Result<IecInput<LTime>, plc_timers_status> {
+        Ok(IecInput::new(bit(self.r#in), LTime::from_nanos(self.pt_ns)).with_reset(bit(self.r)))
+    }
+}
+
+/// The outputs of one call of an IEC timer on LTIME.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_iec_ltime_output {
+    /// `Q`.
+    pub q: bool,
+    /// `ET`, the elapsed time in nanoseconds, 0 to PT.
+    pub et_ns: u64,
+}
+
+impl From<IecOutput<u64>> for plc_timers_iec_ltime_output {
+    fn from(o: IecOutput<u64>) -> Self {
+        plc_timers_iec_ltime_output {
+            q: o.q,
+            et_ns: o.et,
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -265,105 +324,38 @@ impl Mirror for plc_timers_s5_timer {
     }
 }
 
-/// Initializes an S5 timer (reference form): cleared, previous call at 0 ms (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `timer` is NULL or points to writable memory for a `plc_timers_s5_timer_ref`.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_timer_ref_init(
-    timer: *mut plc_timers_s5_timer_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(timer, S5TimerRef::new()) }
-}
-
-/// Initializes an S5 timer (optimized form): cleared, previous call at 0 ms (the same as
-/// zeroing the struct).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `timer` is NULL or points to writable memory for a `plc_timers_s5_timer`.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_timer_init(
-    timer: *mut plc_timers_s5_timer,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(timer, S5Timer::new()) }
-}
-
-/// One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
-/// the reference semantics: the OS ticks of the timer's base since its previous call are applied
-/// (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic of the
-/// kind and `R`. `now_ms` must not go back: an earlier time applies no tick and `last_call_ms`
-/// keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's clock does.
-/// The outputs are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
-/// or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_S5TIME` (`input.tv`);
-/// `PLC_TIMERS_INVALID_STATE` (`*timer`).
-///
-/// # Safety
-/// `timer` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_timer_ref_call(
-    timer: *mut plc_timers_s5_timer_ref,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_s5_input,
-    out: *mut plc_timers_s5_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_call(timer, kind, now_ms, input, out) }
-}
-
-/// One execution of the S5 timer box `kind` at CPU time `now_ms`, by the optimized
-/// implementation: the same as `plc_timers_s5_timer_ref_call` on the packed timer word.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
-/// or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_S5TIME` (`input.tv`);
-/// `PLC_TIMERS_INVALID_STATE` (`*timer`).
-///
-/// # Safety
-/// `timer` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_s5_timer_call(
-    timer: *mut plc_timers_s5_timer,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_s5_input,
-    out: *mut plc_timers_s5_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { s5_call(timer, kind, now_ms, input, out) }
-}
-
-/// The S5 timer call on either form, through the family's interface.
-///
-/// # Safety
-/// As the callers'.
-unsafe fn s5_call<M: Mirror>(
-    timer: *mut M,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_s5_input,
-    out: *mut plc_timers_s5_output,
-) -> plc_timers_status
-where
-    M::Core: S5TimerOps,
-{
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state(timer, out, |t| {
-            let kind = s5_kind(kind)?;
-            let input = input.load()?;
-            Ok(t.call(kind, CpuTime::from_millis(now_ms), input).into())
-        })
-    }
-}
+export!(
+    /// Initializes an S5 timer (reference form): cleared, previous call at 0 ms (the same as
+    /// zeroing the struct).
+    init plc_timers_s5_timer_ref_init(timer: plc_timers_s5_timer_ref)
+);
+export!(
+    /// Initializes an S5 timer (optimized form): cleared, previous call at 0 ms (the same as
+    /// zeroing the struct).
+    init plc_timers_s5_timer_init(timer: plc_timers_s5_timer)
+);
+export!(
+    /// One execution of the S5 timer box `kind` (`plc_timers_s5_kind`) at CPU time `now_ms`, by
+    /// the reference semantics: the OS ticks of the timer's base since its previous call are
+    /// applied (ticks fall on whole multiples of the base in `now_ms`), then `FR`, the start logic
+    /// of the kind and `R`. `now_ms` must not go back: an earlier time applies no tick and
+    /// `last_call_ms` keeps the latest time (rule S5TMR-CLOCK-01), as the timer memory area's
+    /// clock does. The outputs are written to `out`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_S5TIME` (`input.tv`);
+    /// `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_s5_timer_ref_call(timer: plc_timers_s5_timer_ref, kind, now_ms, input: plc_timers_s5_input, out: plc_timers_s5_output)
+);
+export!(
+    /// One execution of the S5 timer box `kind` at CPU time `now_ms`, by the optimized
+    /// implementation: the same as `plc_timers_s5_timer_ref_call` on the packed timer word.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_S5TIME` (`input.tv`);
+    /// `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_s5_timer_call(timer: plc_timers_s5_timer, kind, now_ms, input: plc_timers_s5_input, out: plc_timers_s5_output)
+);
 
 // ---------------------------------------------------------------------------------------------
 // IEC timers
@@ -391,41 +383,67 @@ pub struct plc_timers_iec_timer_ref {
     pub q: u8,
 }
 
+/// The flag bytes of a reference IEC timer struct (`kind` as 0 for none or 1 + the kind, `in`,
+/// `running`, `q`).
+type RefFlags = [u8; 4];
+
+/// The reference IEC timer with the members `start`, `pt`, `et` and `flags` of a C struct, or
+/// `None` when they are not a state it can be in.
+fn iec_ref_load<C: ClockWord, D: IecDuration>(
+    [start, pt, et]: [C; 3],
+    [kind, input, running, q]: RefFlags,
+) -> Option<IecTimerRef<C, D>> {
+    let kind = match kind {
+        0 => None,
+        k => Some(iec_kind(i32::from(k).checked_sub(1)?).ok()?),
+    };
+    IecTimerRef::from_state(IecState {
+        kind,
+        input: flag(input)?,
+        running: flag(running)?,
+        start,
+        pt,
+        et,
+        q: flag(q)?,
+    })
+}
+
+/// The members of a C struct for the reference IEC timer `t` (the inverse of `iec_ref_load`).
+fn iec_ref_store<C: ClockWord, D: IecDuration>(t: &IecTimerRef<C, D>) -> ([C; 3], RefFlags) {
+    let s = t.state();
+    let kind = match s.kind {
+        None => 0,
+        Some(IecKind::Tp) => 1,
+        Some(IecKind::Ton) => 2,
+        Some(IecKind::Tof) => 3,
+        Some(IecKind::Tonr) => 4,
+    };
+    (
+        [s.start, s.pt, s.et],
+        [kind, s.input.into(), s.running.into(), s.q.into()],
+    )
+}
+
 impl Mirror for plc_timers_iec_timer_ref {
     type Core = IecTimerRef<u32>;
 
     fn load(&self) -> Option<IecTimerRef<u32>> {
-        let kind = match self.kind {
-            0 => None,
-            k => Some(iec_kind(i32::from(k).checked_sub(1)?).ok()?),
-        };
-        IecTimerRef::from_state(IecState {
-            kind,
-            input: flag(self.r#in)?,
-            running: flag(self.running)?,
-            start: self.start,
-            pt: self.pt,
-            et: self.et,
-            q: flag(self.q)?,
-        })
+        iec_ref_load(
+            [self.start, self.pt, self.et],
+            [self.kind, self.r#in, self.running, self.q],
+        )
     }
 
     fn store(t: &IecTimerRef<u32>) -> Self {
-        let s = t.state();
+        let ([start, pt, et], [kind, r#in, running, q]) = iec_ref_store(t);
         plc_timers_iec_timer_ref {
-            start: s.start,
-            pt: s.pt,
-            et: s.et,
-            kind: match s.kind {
-                None => 0,
-                Some(IecKind::Tp) => 1,
-                Some(IecKind::Ton) => 2,
-                Some(IecKind::Tof) => 3,
-                Some(IecKind::Tonr) => 4,
-            },
-            r#in: s.input.into(),
-            running: s.running.into(),
-            q: s.q.into(),
+            start,
+            pt,
+            et,
+            kind,
+            r#in,
+            running,
+            q,
         }
     }
 }
@@ -483,302 +501,387 @@ impl Mirror for plc_timers_iec_timer {
     }
 }
 
-/// Initializes an IEC timer (reference form) to the initial structure (the same as zeroing it).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `timer` is NULL or points to writable memory for a `plc_timers_iec_timer_ref`.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_init(
-    timer: *mut plc_timers_iec_timer_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(timer, IecTimerRef::new()) }
+/// The state of one IEC timer on LTIME for the reference semantics
+/// (`plc_timers_iec_ltimer_ref_*`): the structure's members as the manual names them. 32 bytes,
+/// alignment 8; all zero is the initial structure.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_iec_ltimer_ref {
+    /// `START`: the 64-bit CPU clock (ns) when timing began; 0 when not running.
+    pub start: u64,
+    /// `PT` as latched at the start (or loaded by the PT coil), in ns.
+    pub pt: u64,
+    /// `ET` (`ELAPSED`), in ns, at most `pt`.
+    pub et: u64,
+    /// The instruction that last ran on the structure: 0 none yet, else 1 + its
+    /// `plc_timers_iec_kind` (1 TP, 2 TON, 3 TOF, 4 TONR).
+    pub kind: u8,
+    /// `IN` as the last call saw it (the edge memory), 0 or 1.
+    pub r#in: u8,
+    /// 1 while timing, else 0.
+    pub running: u8,
+    /// `Q`, 0 or 1.
+    pub q: u8,
+    /// Zero (the padding to 32 bytes, explicit so that every byte is defined).
+    pub reserved: [u8; 4],
 }
 
-/// Initializes an `IEC_TIMER` (optimized form) to the initial structure (the same as zeroing it).
-///
-/// Returns `PLC_TIMERS_OK`, or `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`.
-///
-/// # Safety
-/// `timer` is NULL or points to writable memory for a `plc_timers_iec_timer`.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_init(
-    timer: *mut plc_timers_iec_timer,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { init(timer, IecTimer::new()) }
-}
+impl Mirror for plc_timers_iec_ltimer_ref {
+    type Core = IecTimerRef<u64, LTime>;
 
-/// One call of the IEC timer instruction `kind` (`plc_timers_iec_kind`) at CPU time `now_ms`,
-/// by the reference semantics. The timer sees the low 32 bits of `now_ms` (the S7-1200
-/// millisecond clock, which wraps); `PT` is latched on the starting edge. The outputs `Q` and
-/// `ET` (ms) are written to `out`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
-/// or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
-///
-/// # Safety
-/// `timer` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_call(
-    timer: *mut plc_timers_iec_timer_ref,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_iec_input,
-    out: *mut plc_timers_iec_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { iec_call(timer, kind, now_ms, input, out) }
-}
+    fn load(&self) -> Option<IecTimerRef<u64, LTime>> {
+        if self.reserved != [0; 4] {
+            return None;
+        }
+        iec_ref_load(
+            [self.start, self.pt, self.et],
+            [self.kind, self.r#in, self.running, self.q],
+        )
+    }
 
-/// One call of the IEC timer instruction `kind` at CPU time `now_ms` on an `IEC_TIMER`, by the
-/// optimized implementation: the same as `plc_timers_iec_timer_ref_call`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER` (`timer`
-/// or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
-///
-/// # Safety
-/// `timer` and `out` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_call(
-    timer: *mut plc_timers_iec_timer,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_iec_input,
-    out: *mut plc_timers_iec_output,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { iec_call(timer, kind, now_ms, input, out) }
-}
-
-/// The IEC timer call on either form, through the family's interface.
-///
-/// # Safety
-/// As the callers'.
-unsafe fn iec_call<M: Mirror>(
-    timer: *mut M,
-    kind: i32,
-    now_ms: u64,
-    input: plc_timers_iec_input,
-    out: *mut plc_timers_iec_output,
-) -> plc_timers_status
-where
-    M::Core: IecTimerOps<u32>,
-{
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state(timer, out, |t| {
-            let kind = iec_kind(kind)?;
-            let o = t.call(kind, CpuTime::from_millis(now_ms), input.into());
-            Ok(plc_timers_iec_output { q: o.q, et: o.et })
-        })
+    fn store(t: &IecTimerRef<u64, LTime>) -> Self {
+        let ([start, pt, et], [kind, r#in, running, q]) = iec_ref_store(t);
+        plc_timers_iec_ltimer_ref {
+            start,
+            pt,
+            et,
+            kind,
+            r#in,
+            running,
+            q,
+            reserved: [0; 4],
+        }
     }
 }
 
-// The structure operations (reading through the structure, the RT and PT coils,
-// RUN-STOP-RUN) of both forms.
-/// Reads `Q` through the structure at CPU time `now_ms` (reference form): as on the CPU, the update
-/// of the instruction that last ran on it happens first (the self-resetting timer of the
-/// S7-1200 manual). Writes `Q` to `q`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` and `q` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_read_q(
-    timer: *mut plc_timers_iec_timer_ref,
-    now_ms: u64,
-    q: *mut bool,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { on_state(timer, q, |t| Ok(t.read_q(CpuTime::from_millis(now_ms)))) }
+/// The S7-1500 `IEC_LTIMER` structure, 32 bytes, alignment 8, for the optimized implementation
+/// (`plc_timers_iec_ltimer_*`): the layout of the library's `IecLTimer`. All zero is the
+/// initial structure.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct plc_timers_iec_ltimer {
+    /// `START`: the 64-bit CPU clock (ns) when timing began; 0 when not running.
+    pub start: u64,
+    /// `PT` as latched, in ns.
+    pub pt: u64,
+    /// `ET` (`ELAPSED`), in ns, at most `pt`.
+    pub et: u64,
+    /// Bit 0 `IN` of the last call, bit 1 `Q`, bit 2 running, bits 5-4 the last instruction
+    /// (`plc_timers_iec_kind`) and bit 6 set once one has run; the other bits 0.
+    pub flags: u8,
+    /// Zero.
+    pub reserved: [u8; 7],
 }
 
-/// Reads `ET` (ms) through the structure at CPU time `now_ms` (reference form), the update first as
-/// in `plc_timers_iec_timer_ref_read_q`. Writes `ET` to `et`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`timer` or `et`); `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` and `et` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_read_et(
-    timer: *mut plc_timers_iec_timer_ref,
-    now_ms: u64,
-    et: *mut u32,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { on_state(timer, et, |t| Ok(t.read_et(CpuTime::from_millis(now_ms)))) }
-}
+// The library's 32 bytes (IEC_LTIMER), the same as this struct's.
+const _: () = assert!(core::mem::size_of::<plc_timers_iec_ltimer>() == 32);
+const _: () = assert!(core::mem::size_of::<IecLTimer>() == 32);
+const _: () = assert!(core::mem::size_of::<plc_timers_iec_ltimer_ref>() == 32);
 
-/// The `-(RT)-` coil with power flow (reference form): stops the timer and clears ET, Q and the
-/// stored IN; the preset stays.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_reset(
-    timer: *mut plc_timers_iec_timer_ref,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.reset_timer();
-            Ok(())
-        })
+impl Mirror for plc_timers_iec_ltimer {
+    type Core = IecLTimer;
+
+    /// Through the library's checked `IecLTimer::from_bytes`, whose byte layout (START, PT, ET
+    /// in native byte order, the flag byte, seven zero bytes) is this struct's.
+    fn load(&self) -> Option<IecLTimer> {
+        let [r0, r1, r2, r3, r4, r5, r6] = self.reserved;
+        let words = [
+            self.start.to_ne_bytes(),
+            self.pt.to_ne_bytes(),
+            self.et.to_ne_bytes(),
+            [self.flags, r0, r1, r2, r3, r4, r5, r6],
+        ];
+        let mut bytes = [0u8; 32];
+        for (chunk, word) in bytes.chunks_exact_mut(8).zip(words) {
+            chunk.copy_from_slice(&word);
+        }
+        IecLTimer::from_bytes(bytes)
+    }
+
+    fn store(t: &IecLTimer) -> Self {
+        let bytes = t.to_bytes();
+        let mut words = bytes.chunks_exact(8).map(|chunk| {
+            let mut word = [0u8; 8];
+            word.copy_from_slice(chunk);
+            word
+        });
+        // Four chunks of 8 in 32 bytes: the default is never taken.
+        let [start, pt, et, [flags, r0, r1, r2, r3, r4, r5, r6]] =
+            [(); 4].map(|()| words.next().unwrap_or_default());
+        plc_timers_iec_ltimer {
+            start: u64::from_ne_bytes(start),
+            pt: u64::from_ne_bytes(pt),
+            et: u64::from_ne_bytes(et),
+            flags,
+            reserved: [r0, r1, r2, r3, r4, r5, r6],
+        }
     }
 }
 
-/// The `-(PT)-` coil with power flow (reference form): loads `pt_ms` (a `TIME` in ms; negative taken
-/// as 0) into the structure's preset; a running timer uses it from its next update.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_preset(
-    timer: *mut plc_timers_iec_timer_ref,
-    pt_ms: i32,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.preset_timer(Time::from_millis(pt_ms));
-            Ok(())
-        })
+impl CIecTimer for plc_timers_iec_timer_ref {
+    type Clock = u32;
+    type Duration = Time;
+    type Preset = i32;
+    fn preset(pt_ms: i32) -> Time {
+        Time::from_millis(pt_ms)
     }
 }
 
-/// A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` 0) returns
-/// to its initial values; a retentive one keeps its data.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_ref_run_stop_run(
-    timer: *mut plc_timers_iec_timer_ref,
-    retentive: u8,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.run_stop_run(bit(retentive));
-            Ok(())
-        })
+impl CIecTimer for plc_timers_iec_timer {
+    type Clock = u32;
+    type Duration = Time;
+    type Preset = i32;
+    fn preset(pt_ms: i32) -> Time {
+        Time::from_millis(pt_ms)
     }
 }
 
-/// Reads `Q` through the structure at CPU time `now_ms` (optimized form): as on the CPU, the update
-/// of the instruction that last ran on it happens first (the self-resetting timer of the
-/// S7-1200 manual). Writes `Q` to `q`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` and `q` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_read_q(
-    timer: *mut plc_timers_iec_timer,
-    now_ms: u64,
-    q: *mut bool,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { on_state(timer, q, |t| Ok(t.read_q(CpuTime::from_millis(now_ms)))) }
-}
-
-/// Reads `ET` (ms) through the structure at CPU time `now_ms` (optimized form), the update first as
-/// in `plc_timers_iec_timer_read_q`. Writes `ET` to `et`.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
-/// (`timer` or `et`); `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` and `et` are NULL or point to memory valid for reads and writes of their types.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_read_et(
-    timer: *mut plc_timers_iec_timer,
-    now_ms: u64,
-    et: *mut u32,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe { on_state(timer, et, |t| Ok(t.read_et(CpuTime::from_millis(now_ms)))) }
-}
-
-/// The `-(RT)-` coil with power flow (optimized form): stops the timer and clears ET, Q and the
-/// stored IN; the preset stays.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_reset(
-    timer: *mut plc_timers_iec_timer,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.reset_timer();
-            Ok(())
-        })
+impl CIecTimer for plc_timers_iec_ltimer_ref {
+    type Clock = u64;
+    type Duration = LTime;
+    type Preset = i64;
+    fn preset(pt_ns: i64) -> LTime {
+        LTime::from_nanos(pt_ns)
     }
 }
 
-/// The `-(PT)-` coil with power flow (optimized form): loads `pt_ms` (a `TIME` in ms; negative taken
-/// as 0) into the structure's preset; a running timer uses it from its next update.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_preset(
-    timer: *mut plc_timers_iec_timer,
-    pt_ms: i32,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.preset_timer(Time::from_millis(pt_ms));
-            Ok(())
-        })
+impl CIecTimer for plc_timers_iec_ltimer {
+    type Clock = u64;
+    type Duration = LTime;
+    type Preset = i64;
+    fn preset(pt_ns: i64) -> LTime {
+        LTime::from_nanos(pt_ns)
     }
 }
 
-/// A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` 0) returns
-/// to its initial values; a retentive one keeps its data.
-///
-/// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
-/// `PLC_TIMERS_INVALID_STATE`.
-///
-/// # Safety
-/// `timer` is NULL or points to memory valid for reads and writes of its type.
-#[no_mangle]
-pub unsafe extern "C" fn plc_timers_iec_timer_run_stop_run(
-    timer: *mut plc_timers_iec_timer,
-    retentive: u8,
-) -> plc_timers_status {
-    // SAFETY: the caller's contract.
-    unsafe {
-        on_state_only(timer, |t| {
-            t.run_stop_run(bit(retentive));
-            Ok(())
-        })
-    }
-}
+// ---------------------------------------------------------------------------------------------
+// The IEC timers on TIME (IEC_TIMER): the calls and the structure operations (reading through
+// the structure, the RT and PT coils, RUN-STOP-RUN), each form
+
+export!(
+    /// Initializes an IEC timer (reference form) to the initial structure (the same as zeroing it).
+    init plc_timers_iec_timer_ref_init(timer: plc_timers_iec_timer_ref)
+);
+export!(
+    /// Initializes an `IEC_TIMER` (optimized form) to the initial structure (the same as zeroing
+    /// it).
+    init plc_timers_iec_timer_init(timer: plc_timers_iec_timer)
+);
+export!(
+    /// One call of the IEC timer instruction `kind` (`plc_timers_iec_kind`) at CPU time `now_ms`,
+    /// by the reference semantics. The timer sees the low 32 bits of `now_ms` (the S7-1200
+    /// millisecond clock, which wraps); `PT` is latched on the starting edge. The outputs `Q` and
+    /// `ET` (ms) are written to `out`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_iec_timer_ref_call(timer: plc_timers_iec_timer_ref, kind, now_ms, input: plc_timers_iec_input, out: plc_timers_iec_output)
+);
+export!(
+    /// One call of the IEC timer instruction `kind` at CPU time `now_ms` on an `IEC_TIMER`, by the
+    /// optimized implementation: the same as `plc_timers_iec_timer_ref_call`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_iec_timer_call(timer: plc_timers_iec_timer, kind, now_ms, input: plc_timers_iec_input, out: plc_timers_iec_output)
+);
+export!(
+    /// Reads `Q` through the structure at CPU time `now_ms` (reference form): as on the CPU, the
+    /// update of the instruction that last ran on it happens first (the self-resetting timer of
+    /// the S7-1200 manual). Writes `Q` to `q`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
+    read_q plc_timers_iec_timer_ref_read_q(timer: plc_timers_iec_timer_ref, now_ms, q: bool)
+);
+export!(
+    /// Reads `ET` (ms) through the structure at CPU time `now_ms` (reference form), the update
+    /// first as in `plc_timers_iec_timer_ref_read_q`. Writes `ET` to `et`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `et`); `PLC_TIMERS_INVALID_STATE`.
+    read_et plc_timers_iec_timer_ref_read_et(timer: plc_timers_iec_timer_ref, now_ms, et: u32)
+);
+export!(
+    /// The `-(RT)-` coil with power flow (reference form): stops the timer and clears ET, Q and
+    /// the stored IN; the preset stays.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    reset plc_timers_iec_timer_ref_reset(timer: plc_timers_iec_timer_ref)
+);
+export!(
+    /// The `-(PT)-` coil with power flow (reference form): loads `pt_ms` (a `TIME` in ms;
+    /// negative taken as 0) into the structure's preset; a running timer uses it from its next
+    /// update.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    preset plc_timers_iec_timer_ref_preset(timer: plc_timers_iec_timer_ref, pt_ms: i32)
+);
+export!(
+    /// A RUN-STOP-RUN transition (reference form): a non-retentive structure (`retentive` 0)
+    /// returns to its initial values; a retentive one keeps its data.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    run_stop_run plc_timers_iec_timer_ref_run_stop_run(timer: plc_timers_iec_timer_ref, retentive: u8)
+);
+export!(
+    /// Reads `Q` through the structure at CPU time `now_ms` (optimized form): as on the CPU, the
+    /// update of the instruction that last ran on it happens first (the self-resetting timer of
+    /// the S7-1200 manual). Writes `Q` to `q`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
+    read_q plc_timers_iec_timer_read_q(timer: plc_timers_iec_timer, now_ms, q: bool)
+);
+export!(
+    /// Reads `ET` (ms) through the structure at CPU time `now_ms` (optimized form), the update
+    /// first as in `plc_timers_iec_timer_read_q`. Writes `ET` to `et`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `et`); `PLC_TIMERS_INVALID_STATE`.
+    read_et plc_timers_iec_timer_read_et(timer: plc_timers_iec_timer, now_ms, et: u32)
+);
+export!(
+    /// The `-(RT)-` coil with power flow (optimized form): stops the timer and clears ET, Q and
+    /// the stored IN; the preset stays.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    reset plc_timers_iec_timer_reset(timer: plc_timers_iec_timer)
+);
+export!(
+    /// The `-(PT)-` coil with power flow (optimized form): loads `pt_ms` (a `TIME` in ms;
+    /// negative taken as 0) into the structure's preset; a running timer uses it from its next
+    /// update.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    preset plc_timers_iec_timer_preset(timer: plc_timers_iec_timer, pt_ms: i32)
+);
+export!(
+    /// A RUN-STOP-RUN transition (optimized form): a non-retentive structure (`retentive` 0)
+    /// returns to its initial values; a retentive one keeps its data.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    run_stop_run plc_timers_iec_timer_run_stop_run(timer: plc_timers_iec_timer, retentive: u8)
+);
+
+// ---------------------------------------------------------------------------------------------
+// The IEC timers on LTIME (S7-1500 IEC_LTIMER; TP_LTIME, TON_LTIME, TOF_LTIME, TONR_LTIME):
+// the same bodies, the clock and the durations in nanoseconds
+
+export!(
+    /// Initializes an IEC timer on LTIME (reference form) to the initial structure (the same as
+    /// zeroing it).
+    init plc_timers_iec_ltimer_ref_init(timer: plc_timers_iec_ltimer_ref)
+);
+export!(
+    /// Initializes an `IEC_LTIMER` (optimized form) to the initial structure (the same as
+    /// zeroing it).
+    init plc_timers_iec_ltimer_init(timer: plc_timers_iec_ltimer)
+);
+export!(
+    /// One call of the IEC timer instruction `kind` (`plc_timers_iec_kind`) on LTIME at CPU time
+    /// `now_ns` (nanoseconds since the CPU started, the S7-1500's 64-bit clock), by the
+    /// reference semantics; `PT` (`input.pt_ns`) is latched on the starting edge. The outputs
+    /// `Q` and `ET` (ns) are written to `out`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_iec_ltimer_ref_call(timer: plc_timers_iec_ltimer_ref, kind, now_ns, input: plc_timers_iec_ltime_input, out: plc_timers_iec_ltime_output)
+);
+export!(
+    /// One call of the IEC timer instruction `kind` on LTIME at CPU time `now_ns` on an
+    /// `IEC_LTIMER`, by the optimized implementation: the same as
+    /// `plc_timers_iec_ltimer_ref_call`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `out`); `PLC_TIMERS_INVALID_KIND`; `PLC_TIMERS_INVALID_STATE` (`*timer`).
+    call plc_timers_iec_ltimer_call(timer: plc_timers_iec_ltimer, kind, now_ns, input: plc_timers_iec_ltime_input, out: plc_timers_iec_ltime_output)
+);
+export!(
+    /// Reads `Q` through the structure at CPU time `now_ns` (reference form, LTIME), the update
+    /// of the instruction that last ran on it first. Writes `Q` to `q`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
+    read_q plc_timers_iec_ltimer_ref_read_q(timer: plc_timers_iec_ltimer_ref, now_ns, q: bool)
+);
+export!(
+    /// Reads `ET` (ns) through the structure at CPU time `now_ns` (reference form, LTIME), the
+    /// update first. Writes `ET` to `et_ns`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `et_ns`); `PLC_TIMERS_INVALID_STATE`.
+    read_et plc_timers_iec_ltimer_ref_read_et(timer: plc_timers_iec_ltimer_ref, now_ns, et_ns: u64)
+);
+export!(
+    /// The `-(RT)-` coil with power flow (reference form, LTIME): stops the timer and clears ET,
+    /// Q and the stored IN; the preset stays.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    reset plc_timers_iec_ltimer_ref_reset(timer: plc_timers_iec_ltimer_ref)
+);
+export!(
+    /// The `-(PT)-` coil with power flow (reference form, LTIME): loads `pt_ns` (an `LTIME` in
+    /// ns; negative taken as 0) into the structure's preset; a running timer uses it from its
+    /// next update.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    preset plc_timers_iec_ltimer_ref_preset(timer: plc_timers_iec_ltimer_ref, pt_ns: i64)
+);
+export!(
+    /// A RUN-STOP-RUN transition (reference form, LTIME): a non-retentive structure
+    /// (`retentive` 0) returns to its initial values; a retentive one keeps its data.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    run_stop_run plc_timers_iec_ltimer_ref_run_stop_run(timer: plc_timers_iec_ltimer_ref, retentive: u8)
+);
+export!(
+    /// Reads `Q` through the `IEC_LTIMER` at CPU time `now_ns` (optimized form), the update of
+    /// the instruction that last ran on it first. Writes `Q` to `q`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `q`); `PLC_TIMERS_INVALID_STATE`.
+    read_q plc_timers_iec_ltimer_read_q(timer: plc_timers_iec_ltimer, now_ns, q: bool)
+);
+export!(
+    /// Reads `ET` (ns) through the `IEC_LTIMER` at CPU time `now_ns` (optimized form), the
+    /// update first. Writes `ET` to `et_ns`.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`
+    /// (`timer` or `et_ns`); `PLC_TIMERS_INVALID_STATE`.
+    read_et plc_timers_iec_ltimer_read_et(timer: plc_timers_iec_ltimer, now_ns, et_ns: u64)
+);
+export!(
+    /// The `-(RT)-` coil with power flow on an `IEC_LTIMER` (optimized form): stops the timer and
+    /// clears ET, Q and the stored IN; the preset stays.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    reset plc_timers_iec_ltimer_reset(timer: plc_timers_iec_ltimer)
+);
+export!(
+    /// The `-(PT)-` coil with power flow on an `IEC_LTIMER` (optimized form): loads `pt_ns` (an
+    /// `LTIME` in ns; negative taken as 0) into the structure's preset; a running timer uses it
+    /// from its next update.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    preset plc_timers_iec_ltimer_preset(timer: plc_timers_iec_ltimer, pt_ns: i64)
+);
+export!(
+    /// A RUN-STOP-RUN transition on an `IEC_LTIMER` (optimized form): a non-retentive structure
+    /// (`retentive` 0) returns to its initial values; a retentive one keeps its data.
+    ///
+    /// Returns `PLC_TIMERS_OK`; `PLC_TIMERS_NULL_POINTER` / `PLC_TIMERS_MISALIGNED_POINTER`;
+    /// `PLC_TIMERS_INVALID_STATE`.
+    run_stop_run plc_timers_iec_ltimer_run_stop_run(timer: plc_timers_iec_ltimer, retentive: u8)
+);

@@ -13,7 +13,8 @@
  *
  * Also the backward clock (rule S5TMR-CLOCK-01) through the C API: an S_ODT of S5T#1S executed
  * at 0, 600, 100 and 600 ms runs out at 1000 ms in each S5 form (LAD manual 9.5: 100 ticks of
- * 10 ms), and a TON given a clock 1 ms behind its start reads it as the 32-bit clock's wrap.
+ * 10 ms), and a TON given a clock 1 ms behind its start reads it as the 32-bit clock's wrap
+ * (on LTIME: 1 ns behind, the 64-bit clock's wrap).
  */
 #include "plc_timers.h"
 
@@ -145,20 +146,21 @@ static void timer_memory_stl(int kind, int tested, uint8_t on, struct trace *t) 
 
 /* ---- IEC timers --------------------------------------------------------------------------- */
 
-#define IEC_TIMER_SCENARIO(NAME, TYPE, CALL, RSR)                                                \
+/* TIME in ms, LTIME in ns: the same scenario, the times scaled by SCALE. */
+#define IEC_TIMER_SCENARIO(NAME, TYPE, INPUT, OUTPUT, PT, ET, SCALE, CALL, RSR)                  \
     static void NAME(int kind, int tested, uint8_t on, struct trace *t) {                        \
         TYPE timer;                                                                              \
         memset(&timer, 0, sizeof timer);                                                         \
         for (int k = 0; k <= STEPS; k++) {                                                       \
-            struct plc_timers_iec_input i;                                                       \
-            struct plc_timers_iec_output o;                                                      \
+            INPUT i;                                                                             \
+            OUTPUT o;                                                                            \
             memset(&i, 0, sizeof i);                                                             \
             i.in = in(0, k % STEPS, tested, on);                                                 \
             i.r = in(1, k % STEPS, tested, on);                                                  \
-            i.pt = 50;                                                                           \
-            status(t, CALL(&timer, kind, (uint64_t)k * 20, i, &o));                              \
+            i.PT = 50 * (SCALE);                                                                 \
+            status(t, CALL(&timer, kind, (uint64_t)k * 20 * (SCALE), i, &o));                    \
             put(t, &o.q, sizeof o.q);                                                            \
-            put(t, &o.et, sizeof o.et);                                                          \
+            put(t, &o.ET, sizeof o.ET);                                                          \
             put(t, &timer, sizeof timer);                                                        \
             /* RUN-STOP-RUN with `retentive` as field 2, every third step. */                    \
             if (k % 3 == 2) {                                                                    \
@@ -168,10 +170,19 @@ static void timer_memory_stl(int kind, int tested, uint8_t on, struct trace *t) 
         }                                                                                        \
     }
 
-IEC_TIMER_SCENARIO(iec_timer_ref, struct plc_timers_iec_timer_ref, plc_timers_iec_timer_ref_call,
+IEC_TIMER_SCENARIO(iec_timer_ref, struct plc_timers_iec_timer_ref, struct plc_timers_iec_input,
+                   struct plc_timers_iec_output, pt, et, 1, plc_timers_iec_timer_ref_call,
                    plc_timers_iec_timer_ref_run_stop_run)
-IEC_TIMER_SCENARIO(iec_timer_opt, struct plc_timers_iec_timer, plc_timers_iec_timer_call,
+IEC_TIMER_SCENARIO(iec_timer_opt, struct plc_timers_iec_timer, struct plc_timers_iec_input,
+                   struct plc_timers_iec_output, pt, et, 1, plc_timers_iec_timer_call,
                    plc_timers_iec_timer_run_stop_run)
+IEC_TIMER_SCENARIO(iec_ltimer_ref, struct plc_timers_iec_ltimer_ref,
+                   struct plc_timers_iec_ltime_input, struct plc_timers_iec_ltime_output, pt_ns,
+                   et_ns, 1000000, plc_timers_iec_ltimer_ref_call,
+                   plc_timers_iec_ltimer_ref_run_stop_run)
+IEC_TIMER_SCENARIO(iec_ltimer_opt, struct plc_timers_iec_ltimer, struct plc_timers_iec_ltime_input,
+                   struct plc_timers_iec_ltime_output, pt_ns, et_ns, 1000000,
+                   plc_timers_iec_ltimer_call, plc_timers_iec_ltimer_run_stop_run)
 
 /* ---- IEC counters, every integer type ----------------------------------------------------- */
 
@@ -311,6 +322,8 @@ static const struct block BLOCKS[] = {
     {"timer memory STL (FR, SP..SF, R)", timer_memory_stl, 5, 3},
     {"IEC timer (reference) + RUN-STOP-RUN", iec_timer_ref, 4, 3},
     {"IEC timer (optimized) + RUN-STOP-RUN", iec_timer_opt, 4, 3},
+    {"IEC timer on LTIME (reference) + RUN-STOP-RUN", iec_ltimer_ref, 4, 3},
+    {"IEC timer on LTIME (optimized) + RUN-STOP-RUN", iec_ltimer_opt, 4, 3},
 #define COUNTER_BLOCKS(T)                                                                        \
     {"IEC counter " #T " (reference)", counter_##T##_ref, 3, 4},                                 \
         {"IEC counter " #T " (optimized)", counter_##T##_opt, 3, 4}
@@ -412,6 +425,24 @@ static void backward_clock(void) {
           "call");
     CHECK(x.q && x.et == 500 && y.q && y.et == 500,
           "S5TMR-CLOCK-01 / IEC-WRAP-01: a clock behind START reads as the wrap");
+
+    /* The same on LTIME's 64-bit nanosecond clock: 1 ns behind START is 2^64 - 1 ns later. */
+    struct plc_timers_iec_ltimer lton;
+    struct plc_timers_iec_ltimer_ref lton_ref;
+    struct plc_timers_iec_ltime_input lon = {1, 0, 500000000};
+    struct plc_timers_iec_ltime_output lx, ly;
+    memset(&lton, 0, sizeof lton);
+    memset(&lton_ref, 0, sizeof lton_ref);
+    plc_timers_iec_ltimer_call(&lton, PLC_TIMERS_TON, 1000000000, lon, &lx);
+    plc_timers_iec_ltimer_ref_call(&lton_ref, PLC_TIMERS_TON, 1000000000, lon, &ly);
+    CHECK(!lx.q && !ly.q, "TON on LTIME just started");
+    CHECK(plc_timers_iec_ltimer_call(&lton, PLC_TIMERS_TON, 999999999, lon, &lx) == PLC_TIMERS_OK,
+          "call");
+    CHECK(plc_timers_iec_ltimer_ref_call(&lton_ref, PLC_TIMERS_TON, 999999999, lon, &ly) ==
+              PLC_TIMERS_OK,
+          "call");
+    CHECK(lx.q && lx.et_ns == 500000000 && ly.q && ly.et_ns == 500000000,
+          "S5TMR-CLOCK-01 / IEC-WRAP-01: on LTIME a clock behind START reads as the wrap");
 }
 
 int main(int argc, char **argv) {

@@ -31,6 +31,17 @@ AT(plc_timers_iec_timer, start, 0);
 AT(plc_timers_iec_timer, pt, 4);
 AT(plc_timers_iec_timer, et, 8);
 AT(plc_timers_iec_timer, flags, 12);
+/* The S7-1500 IEC_LTIMER (32 bytes): 3 x u64 + 4 x u8 + u8[4]; 3 x u64 + u8 + u8[7]. */
+LAYOUT(plc_timers_iec_ltimer_ref, 32, 8);
+AT(plc_timers_iec_ltimer_ref, kind, 24);
+AT(plc_timers_iec_ltimer_ref, q, 27);
+AT(plc_timers_iec_ltimer_ref, reserved, 28);
+LAYOUT(plc_timers_iec_ltimer, 32, 8);
+AT(plc_timers_iec_ltimer, start, 0);
+AT(plc_timers_iec_ltimer, pt, 8);
+AT(plc_timers_iec_ltimer, et, 16);
+AT(plc_timers_iec_ltimer, flags, 24);
+AT(plc_timers_iec_ltimer, reserved, 25);
 /* u16 + 4 x u8; u16. */
 LAYOUT(plc_timers_s5_counter_ref, 6, 2);
 LAYOUT(plc_timers_s5_counter, 2, 2);
@@ -66,6 +77,9 @@ AT(plc_timers_s5_input, tv, 4);
 LAYOUT(plc_timers_iec_input, 8, 4); /* 2 x u8, pad 2, i32 */
 _Static_assert(sizeof(((plc_timers_iec_input *)0)->in) == 1, "IN is a byte");
 AT(plc_timers_iec_input, pt, 4);
+LAYOUT(plc_timers_iec_ltime_input, 16, 8); /* 2 x u8, pad 6, i64 */
+_Static_assert(sizeof(((plc_timers_iec_ltime_input *)0)->in) == 1, "IN is a byte");
+AT(plc_timers_iec_ltime_input, pt_ns, 8);
 LAYOUT(plc_timers_s5_counter_input, 8, 2); /* 5 x u8, pad, u16 */
 AT(plc_timers_s5_counter_input, pv, 6);
 LAYOUT(plc_timers_s5_counter_input_bcd, 8, 2);
@@ -73,6 +87,8 @@ AT(plc_timers_s5_counter_input_bcd, pv_bcd, 6);
 /* Outputs: bool then the values. */
 LAYOUT(plc_timers_s5_output, 6, 2);
 LAYOUT(plc_timers_iec_output, 8, 4);
+LAYOUT(plc_timers_iec_ltime_output, 16, 8);
+AT(plc_timers_iec_ltime_output, et_ns, 8);
 LAYOUT(plc_timers_s5_counter_output, 6, 2);
 /* The two preset representations are 16-bit words. */
 _Static_assert(sizeof(plc_timers_s5_count) == 2 && sizeof(plc_timers_bcd_word) == 2, "words");

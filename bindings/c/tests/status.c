@@ -123,6 +123,47 @@ static void time_error(const char *text, plc_timers_status status, size_t positi
     }
 }
 
+static void ltime_error(const char *text, plc_timers_status status, size_t position) {
+    int64_t ns = 4242;
+    size_t at = 9999;
+    plc_timers_status got = plc_timers_ltime_parse(text, &ns, &at);
+    checks++;
+    if (got != status || at != position || ns != 4242) {
+        failures++;
+        fprintf(stderr,
+                "ltime_parse(\"%s\"): status %d at %zu (ns %lld), expected %d at %zu\n", text,
+                (int)got, at, (long long)ns, (int)status, position);
+    }
+}
+
+/* The LTIME literals (LTIME-LIT-01): the units D H M S MS US NS, the full signed 64-bit range of
+ * nanoseconds, and each error with its position, as for TIME. */
+static void ltime_parser(void) {
+    int64_t ns = 0;
+    size_t at = 0;
+    EXPECT(PLC_TIMERS_OK, plc_timers_ltime_parse("LT#1MS500US", &ns, &at));
+    CHECK(ns == 1500000);
+    EXPECT(PLC_TIMERS_OK, plc_timers_ltime_parse("ltime#30d", &ns, NULL));
+    CHECK(ns == INT64_C(30) * 86400 * 1000000000);
+    EXPECT(PLC_TIMERS_OK, plc_timers_ltime_parse("LT#1D_2H_3M_4S_5MS_6US_7NS", &ns, NULL));
+    CHECK(ns == ((((INT64_C(1) * 24 + 2) * 60 + 3) * 60 + 4) * 1000000000 + 5006007));
+    EXPECT(PLC_TIMERS_OK,
+           plc_timers_ltime_parse("LT#-106751D_23H_47M_16S_854MS_775US_808NS", &ns, NULL));
+    CHECK(ns == INT64_MIN);
+    EXPECT(PLC_TIMERS_OK,
+           plc_timers_ltime_parse("LT#106751D_23H_47M_16S_854MS_775US_807NS", &ns, NULL));
+    CHECK(ns == INT64_MAX);
+    ltime_error("", PLC_TIMERS_LITERAL_EMPTY, 0);
+    ltime_error("T#5S", PLC_TIMERS_LITERAL_PREFIX, 0); /* a TIME literal is not an LTIME one */
+    ltime_error("LT#5X", PLC_TIMERS_LITERAL_UNKNOWN_UNIT, 4);
+    ltime_error("LT#5US_75MS", PLC_TIMERS_LITERAL_UNIT_ORDER, 9);
+    ltime_error("LT#1MS_1000US", PLC_TIMERS_LITERAL_COMPONENT_RANGE, 7);
+    ltime_error("LT#5S\xff", PLC_TIMERS_LITERAL_UNEXPECTED_CHAR, 5); /* not UTF-8 */
+    ltime_error("LT#106751D_23H_47M_16S_854MS_775US_808NS", PLC_TIMERS_LITERAL_OUT_OF_RANGE, 3);
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_ltime_parse(NULL, &ns, NULL));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_ltime_parse("LT#1S", NULL, NULL));
+}
+
 static void parsers(void) {
     uint16_t word = 0;
     int32_t ms = 0;
@@ -491,11 +532,94 @@ static void memory_areas(void) {
     EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_counter_memory_status(&counter_area, 0, &q));
 }
 
+/* The same on LTIME (IEC_LTIMER, 32 bytes): TON with PT = 1 s = 10^9 ns started at 0 ns. */
+static void iec_ltimers(void) {
+    plc_timers_iec_ltimer_ref ref, ref0;
+    plc_timers_iec_ltimer opt, opt0;
+    plc_timers_iec_ltime_output out, out0;
+    plc_timers_iec_ltime_input on = {.in = true, .pt_ns = 1000000000};
+    CHECK(sizeof(plc_timers_iec_ltimer) == 32); /* the S7-1500 IEC_LTIMER */
+    CHECK(sizeof(plc_timers_iec_ltimer_ref) == 32);
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_ref_init(NULL));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_init(NULL));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_init(&ref));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_init(&opt));
+    ref0 = ref, opt0 = opt;
+    FILL(out), FILL(out0);
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_ref_call(NULL, 1, 0, on, &out));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_call(&opt, 1, 0, on, NULL));
+    EXPECT(PLC_TIMERS_INVALID_KIND, plc_timers_iec_ltimer_ref_call(&ref, 4, 0, on, &out));
+    EXPECT(PLC_TIMERS_INVALID_KIND, plc_timers_iec_ltimer_call(&opt, -1, 0, on, &out));
+    UNCHANGED(ref, ref0);
+    UNCHANGED(opt, opt0);
+    UNCHANGED(out, out0);
+    plc_timers_iec_ltimer_ref bad_ref = ref;
+    bad_ref.et = 5; /* ET above PT = 0 */
+    EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_iec_ltimer_ref_call(&bad_ref, 1, 0, on, &out));
+    bad_ref = ref;
+    bad_ref.reserved[3] = 1;
+    EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_iec_ltimer_ref_call(&bad_ref, 1, 0, on, &out));
+    plc_timers_iec_ltimer bad_opt = opt;
+    bad_opt.flags = 0x80;
+    EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_iec_ltimer_call(&bad_opt, 1, 0, on, &out));
+    bad_opt = opt;
+    bad_opt.reserved[6] = 1; /* the padding to 32 bytes */
+    EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_iec_ltimer_call(&bad_opt, 1, 0, on, &out));
+    UNCHANGED(out, out0);
+
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_call(&ref, PLC_TIMERS_TON, 0, on, &out));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_call(&opt, PLC_TIMERS_TON, 0, on, &out));
+    bool q[2];
+    uint64_t et[2];
+    /* 1 ns short of PT: running; at PT the read finds the time run out (IEC-ACCESS-01). */
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_read_q(&ref, 999999999, &q[0]));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_read_q(&opt, 999999999, &q[1]));
+    CHECK(!q[0] && !q[1]);
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_read_q(&ref, 1000000000, &q[0]));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_read_q(&opt, 1000000000, &q[1]));
+    CHECK(q[0] && q[1]);
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_read_et(&ref, 1500000000, &et[0]));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_read_et(&opt, 1500000000, &et[1]));
+    CHECK(et[0] == 1000000000 && et[1] == 1000000000); /* ET stops at PT */
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_read_q(&opt, 0, NULL));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_ref_read_et(NULL, 0, &et[0]));
+    /* The RT coil (IEC-RT-01), the PT coil (IEC-PT-COIL-01), negative PT as 0. */
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_reset(&ref));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_reset(&opt));
+    CHECK(ref.et == 0 && ref.q == 0 && ref.pt == 1000000000);
+    CHECK(opt.et == 0 && (opt.flags & 2) == 0 && opt.pt == 1000000000);
+    /* A preset past TIME's range (LT#30D). */
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_preset(&ref, INT64_C(2592000000000000)));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_preset(&opt, INT64_C(2592000000000000)));
+    CHECK(ref.pt == UINT64_C(2592000000000000) && opt.pt == UINT64_C(2592000000000000));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_preset(&opt, INT64_MIN)); /* negative as 0 */
+    CHECK(opt.pt == 0);
+    /* RUN-STOP-RUN (IEC-RETAIN-01). */
+    opt0 = opt;
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_run_stop_run(&opt, 7)); /* any byte but 0: TRUE */
+    UNCHANGED(opt, opt0);
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_run_stop_run(&opt, false));
+    EXPECT(PLC_TIMERS_OK, plc_timers_iec_ltimer_ref_run_stop_run(&ref, false));
+    plc_timers_iec_ltimer zero_opt;
+    plc_timers_iec_ltimer_ref zero_ref;
+    memset(&zero_opt, 0, sizeof zero_opt);
+    memset(&zero_ref, 0, sizeof zero_ref);
+    UNCHANGED(opt, zero_opt);
+    UNCHANGED(ref, zero_ref);
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_reset(NULL));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_ref_preset(NULL, 1));
+    EXPECT(PLC_TIMERS_NULL_POINTER, plc_timers_iec_ltimer_run_stop_run(NULL, false));
+    bad_opt.flags = 0x80;
+    EXPECT(PLC_TIMERS_INVALID_STATE, plc_timers_iec_ltimer_reset(&bad_opt));
+}
+
 int main(void) {
     messages();
     parsers();
+    ltime_parser();
     s5_timers();
     iec_timers();
+    iec_ltimers();
     counters();
     memory_areas();
     printf("%d status codes, %d checks, %d failed\n", CODE_COUNT, checks, failures);

@@ -7,13 +7,15 @@
  * timers' files may have an RT column, the -(RT)- coil, applied with the C API's reset.
  *
  * Every row runs through every form of the block, each on its own state: the reference and the
- * optimized form, and for the S5 timers and counters also a box call on a memory area. The
+ * optimized form, and for the S5 timers and counters also a box call on a memory area; the IEC
+ * timers' rows also through the LTIME timers, scaled to nanoseconds (see replay_iec_timer). The
  * presets are parsed by the C API's parsers. Every output of every row is compared with the
  * file; every call must return PLC_TIMERS_OK. Exit status 0 when all agree, 1 on any
  * difference (each reported with file, line and column), 2 on a malformed file or directory.
  */
 #include "plc_timers.h"
 
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <inttypes.h>
@@ -198,7 +200,34 @@ static void replay_s5_timer(const char *path, int kind) {
 /* ------------------------------------------------------------------------------------------ */
 /* IEC timers: reference and optimized (IEC_TIMER). A row with RT = 1 (the optional column of
  * the -(RT)- coil, spec/cli.md "Traces") runs the coil before the box call, as a network above
- * the box's network would. */
+ * the box's network would.
+ *
+ * The same trace also runs through the LTIME timers (IEC_LTIMER, both forms) scaled to
+ * nanoseconds: every time and PT times 10^6 ns/ms, and each of their outputs is compared with
+ * the file's, ET times 10^6 (the oracle is the TIME vectors, independent of the LTIME code).
+ * That holds while the TIME timer's 32-bit millisecond clock cannot wrap within a running
+ * timer: a running timer has ET below PT < 2^31 ms, so a step of less than 2^31 ms forward
+ * never wraps. From a step of 2^31 ms or more (or backwards, or past 2^64 ns) on, the two
+ * clocks part by design and the file's LTIME replay stops (counted as a cut). A PT cell that is
+ * a `T#`/`TIME#` literal is also parsed as `LT#`/`LTIME#` by the LTIME parser, which must give
+ * the TIME value in nanoseconds. */
+
+#define NS_PER_MS 1000000
+static unsigned long ltime_rows, ltime_cuts, ltime_literals;
+
+/* The LTIME literal of TIME literal `time` (`T#...` or `TIME#...`, any case) in `out`; 0 when
+ * `time` is not one (a plain number of milliseconds). */
+static int has_prefix(const char *s, const char *prefix) {
+    for (; *prefix; s++, prefix++)
+        if (toupper((unsigned char)*s) != *prefix) return 0;
+    return 1;
+}
+
+static int as_ltime_literal(const char *time, char *out, size_t size) {
+    if (has_prefix(time, "T#") || has_prefix(time, "TIME#"))
+        return snprintf(out, size, "L%s", time) < (int)size;
+    return 0;
+}
 
 static void replay_iec_timer(const char *path, int kind) {
     csv c;
@@ -208,14 +237,21 @@ static void replay_iec_timer(const char *path, int kind) {
     int pt = required(&c, "PT"), q = required(&c, "Q"), et = required(&c, "ET");
     plc_timers_iec_timer_ref ref;
     plc_timers_iec_timer opt;
+    plc_timers_iec_ltimer_ref lref;
+    plc_timers_iec_ltimer lopt;
     check_status(&c, "ref init", plc_timers_iec_timer_ref_init(&ref));
     check_status(&c, "init", plc_timers_iec_timer_init(&opt));
+    check_status(&c, "LTIME ref init", plc_timers_iec_ltimer_ref_init(&lref));
+    check_status(&c, "LTIME init", plc_timers_iec_ltimer_init(&lopt));
+    int scaled = 1, first = 1;
+    uint64_t before = 0;
     while (csv_next(&c)) {
         plc_timers_iec_input in = {.in = cell_bool(&c, in_col), .r = cell_bool(&c, r)};
         if (plc_timers_time_parse(c.field[pt], &in.pt, NULL) != PLC_TIMERS_OK)
             die(c.path, c.line, "PT is not a TIME literal");
         uint64_t now = cell_u64(&c, t);
-        if (cell_bool(&c, rt)) {
+        int reset = cell_bool(&c, rt);
+        if (reset) {
             check_status(&c, "reference RT", plc_timers_iec_timer_ref_reset(&ref));
             check_status(&c, "optimized RT", plc_timers_iec_timer_reset(&opt));
             rt_rows++;
@@ -229,6 +265,47 @@ static void replay_iec_timer(const char *path, int kind) {
             compare_u64(&c, form[i], "ET", cell_u64(&c, et), out[i].et);
         }
         rows++;
+
+        /* The LTIME timers on the scaled row. */
+        char ltime[MAX_LINE + 1];
+        if (as_ltime_literal(c.field[pt], ltime, sizeof ltime)) {
+            int64_t pt_ns = 0;
+            size_t at = 0;
+            plc_timers_status s = plc_timers_ltime_parse(ltime, &pt_ns, &at);
+            comparisons++;
+            ltime_literals++;
+            if ((s != PLC_TIMERS_OK || pt_ns != (int64_t)in.pt * NS_PER_MS) &&
+                failures++ < MAX_REPORTS)
+                fprintf(stderr,
+                        "%s:%lu: LTIME parser: %s: status %d at %zu, %" PRId64
+                        " ns, expected %" PRId64 " ns\n",
+                        c.path, c.line, ltime, (int)s, at, pt_ns, (int64_t)in.pt * NS_PER_MS);
+        }
+        if (scaled && (now > UINT64_MAX / NS_PER_MS ||
+                       (!first && (now < before || now - before >= (UINT64_C(1) << 31))))) {
+            scaled = 0;
+            ltime_cuts++;
+        }
+        first = 0;
+        before = now;
+        if (!scaled) continue;
+        plc_timers_iec_ltime_input lin = {.in = in.in, .r = in.r, .pt_ns = (int64_t)in.pt * NS_PER_MS};
+        uint64_t now_ns = now * NS_PER_MS;
+        if (reset) {
+            check_status(&c, "LTIME reference RT", plc_timers_iec_ltimer_ref_reset(&lref));
+            check_status(&c, "LTIME optimized RT", plc_timers_iec_ltimer_reset(&lopt));
+        }
+        plc_timers_iec_ltime_output lout[2];
+        check_status(&c, "LTIME reference",
+                     plc_timers_iec_ltimer_ref_call(&lref, kind, now_ns, lin, &lout[0]));
+        check_status(&c, "LTIME optimized",
+                     plc_timers_iec_ltimer_call(&lopt, kind, now_ns, lin, &lout[1]));
+        const char *lform[2] = {"LTIME reference (ns / 10^6)", "LTIME optimized (ns / 10^6)"};
+        for (int i = 0; i < 2; i++) {
+            compare(&c, lform[i], "Q", cell_bool(&c, q), lout[i].q);
+            compare_u64(&c, lform[i], "ET (ns)", cell_u64(&c, et) * NS_PER_MS, lout[i].et_ns);
+        }
+        ltime_rows++;
     }
     csv_close(&c);
 }
@@ -403,8 +480,14 @@ int main(int argc, char **argv) {
     closedir(top);
     printf("%lu files, %lu rows (%lu with the RT coil), %lu outputs compared, %lu differences\n",
            files, rows, rt_rows, comparisons, failures);
+    printf("LTIME: %lu IEC timer rows replayed scaled to ns (%lu files cut at a step of 2^31 ms "
+           "or more), %lu PT literals parsed as LTIME\n",
+           ltime_rows, ltime_cuts, ltime_literals);
     /* The IEC timers' decisions.csv set the RT coil: a replay that never applied it did not
      * replay them. */
     if (rt_rows == 0) die(argv[1], 0, "no row with RT = 1: the RT column was not replayed");
+    /* Likewise the LTIME replay must have run (a cut of every file would test nothing). */
+    if (ltime_rows == 0 || ltime_literals == 0)
+        die(argv[1], 0, "no IEC timer row replayed on LTIME");
     return failures ? 1 : 0;
 }
