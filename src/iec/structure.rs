@@ -817,13 +817,11 @@ impl<C: ClockWord, D: IecDuration> IecTimerOps<C, D> for IecTimerOf<C, D> {
                             et: self.pt,
                         };
                     }
+                    // The pause selected, not branched to: in a loop over timers IN falls
+                    // on one timer or another, and the branch was mispredicted there.
                     self.et = elapsed;
-                    if on {
-                        self.set_flags(flags | flag::RUNNING);
-                    } else {
-                        self.start = C::ZERO;
-                        self.set_flags(flags);
-                    }
+                    self.start = core::hint::select_unpredictable(on, self.start, C::ZERO);
+                    self.set_flags(flags | bit(on, flag::RUNNING));
                     IecOutput {
                         q: false,
                         et: elapsed,
