@@ -292,16 +292,16 @@ pub trait BlockOps: Default + Copy + Debug + Send + Sync + 'static {
         State = Self::State,
         Preset = Self::Preset,
     >;
-    /// [`Family::Kind`].
-    type Kind: Copy + Eq + Debug + 'static;
+    /// [`Family::Kind`] (plain data as the instance is, so that a front end may hold both).
+    type Kind: Copy + Eq + Debug + Send + Sync + 'static;
     /// [`Family::Input`].
     type Input: Copy + Debug;
     /// [`Family::Output`].
     type Output: Copy + Debug + PartialEq;
     /// [`Family::State`].
     type State: Copy + Debug + PartialEq;
-    /// [`Family::Preset`].
-    type Preset: Copy + Debug + PartialEq + Display;
+    /// [`Family::Preset`] (plain data, as the kind).
+    type Preset: Copy + Debug + PartialEq + Display + Send + Sync + 'static;
     /// Whether [`BlockOps::call_explained`] gives the reference's rules (the optimized forms
     /// give none: they are proven equal to the reference, which is the one that explains).
     const EXPLAINS: bool;

@@ -339,6 +339,28 @@ impl<C: ClockWord, D: IecDuration> crate::block::Family for IecTimers<C, D> {
     }
 }
 
+/// The state, its round trip and the access of [`BlockOps`](crate::block::BlockOps), the same
+/// for both implementations `$t` (whose own `from_state` checks the state).
+macro_rules! state_and_access {
+    ($t:ident) => {
+        fn state(&self) -> IecState<C> {
+            IecTimerOps::state(self)
+        }
+
+        fn from_state(state: IecState<C>, _last_call: CpuTime<D::Unit>) -> Option<Self> {
+            $t::from_state(state)
+        }
+
+        fn access(
+            &mut self,
+            now: CpuTime<D::Unit>,
+            a: crate::block::Access<D>,
+        ) -> Result<Option<crate::block::Value>, crate::block::NoAccess> {
+            access(self, now, a)
+        }
+    };
+}
+
 /// [`BlockOps::access`](crate::block::BlockOps::access) of both implementations: the reads and
 /// coils of [`IecTimerOps`].
 fn access<C: ClockWord, D: IecDuration, T: IecTimerOps<C, D>>(
@@ -391,21 +413,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerRef<C, D> 
         IecTimerRef::call_explained(self, kind, now, input)
     }
 
-    fn state(&self) -> IecState<C> {
-        IecTimerOps::state(self)
-    }
-
-    fn from_state(state: IecState<C>, _last_call: CpuTime<D::Unit>) -> Option<Self> {
-        IecTimerRef::from_state(state)
-    }
-
-    fn access(
-        &mut self,
-        now: CpuTime<D::Unit>,
-        a: crate::block::Access<D>,
-    ) -> Result<Option<crate::block::Value>, crate::block::NoAccess> {
-        access(self, now, a)
-    }
+    state_and_access!(IecTimerRef);
 
     fn step(
         &mut self,
@@ -461,21 +469,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerOf<C, D> {
         crate::block::unexplained(IecTimerOps::call(self, kind, now, input))
     }
 
-    fn state(&self) -> IecState<C> {
-        IecTimerOps::state(self)
-    }
-
-    fn from_state(state: IecState<C>, _last_call: CpuTime<D::Unit>) -> Option<Self> {
-        IecTimerOf::from_state(state)
-    }
-
-    fn access(
-        &mut self,
-        now: CpuTime<D::Unit>,
-        a: crate::block::Access<D>,
-    ) -> Result<Option<crate::block::Value>, crate::block::NoAccess> {
-        access(self, now, a)
-    }
+    state_and_access!(IecTimerOf);
 
     #[inline]
     fn step(
