@@ -229,9 +229,13 @@ fn keyword(port: Port) -> String {
     }
 }
 
-/// The port a keyword argument names.
+/// The port a keyword argument names ([`keyword`], compared without building it: once per
+/// input of every call).
 fn port_of(name: &str) -> Option<Port> {
-    Port::ALL.into_iter().find(|&p| keyword(p) == name)
+    Port::ALL.into_iter().find(|&p| match p {
+        Port::In => name == "in_",
+        p => p.name().eq_ignore_ascii_case(name) && !name.bytes().any(|b| b.is_ascii_uppercase()),
+    })
 }
 
 /// Any block, data type and implementation behind one object-safe interface (times in whole
