@@ -9,7 +9,7 @@
 use plc_timers::block::{
     Access, BlockOps, Family as _, Fields, Instruction, Outputs, Signals, Value, Visit,
 };
-use plc_timers::catalog::{Block, DataType, Port, PresetKind};
+use plc_timers::catalog::{Block, DataType, Port, PresetKind, ValueKind};
 use plc_timers::counter::s5::S5CounterOutput;
 use plc_timers::s5::S5Output;
 use plc_timers::time::CpuTime;
@@ -738,6 +738,46 @@ macro_rules! block_classes {
 // ---------------------------------------------------------------------------------------------
 // The classes: their Python signatures
 
+// The boolean keywords of each family's `call`, in the order of its Python signature: the
+// boolean inputs of the family's blocks ([`check_keywords`]), named as [`keyword`] names them.
+const S5_TIMER_KEYWORDS: [&str; 3] = ["s", "r", "fr"];
+const IEC_TIMER_KEYWORDS: [&str; 2] = ["in_", "r"];
+const COUNTER_KEYWORDS: [&str; 4] = ["cu", "cd", "r", "ld"];
+const S5_COUNTER_KEYWORDS: [&str; 5] = ["cu", "cd", "s", "r", "fr"];
+
+/// The keywords `names` with the values Python gave them.
+fn inputs<const N: usize>(
+    names: [&'static str; N],
+    values: [bool; N],
+) -> [(&'static str, bool); N] {
+    core::array::from_fn(|i| (names[i], values[i]))
+}
+
+/// Whether the keywords `names` are the boolean inputs of the blocks of `block`'s family, as
+/// the catalog names them (the coils left out: a class gives them by method, `reset_timer`):
+/// checked when the module loads, so that a catalog change a signature does not follow is an
+/// `ImportError`.
+fn check_keywords(names: &[&str], block: Block) -> PyResult<()> {
+    let mut ports: Vec<String> = Block::ALL
+        .into_iter()
+        .filter(|b| b.family() == block.family())
+        .flat_map(|b| b.inputs().iter().copied())
+        .filter(|p| p.kind() == ValueKind::Bool)
+        .map(keyword)
+        .collect();
+    ports.sort();
+    ports.dedup();
+    let mut given: Vec<String> = names.iter().map(|n| n.to_string()).collect();
+    given.sort();
+    if given != ports {
+        return Err(pyo3::exceptions::PyImportError::new_err(format!(
+            "the keywords of {}'s family are {given:?}; its blocks' inputs are {ports:?}",
+            block
+        )));
+    }
+    Ok(())
+}
+
 block_classes! {
     "`tv`: the time value, a literal (`\"S5T#5S\"`, `\"W#16#2050\"`), a word (int) or an \
      `S5Time`; `call()` may give another. `optimized=True` drives the optimized implementation \
@@ -760,7 +800,7 @@ block_classes! {
             fr: bool,
             tv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyS5Output> {
-            let inputs = [("s", s), ("r", r), ("fr", fr)];
+            let inputs = inputs(S5_TIMER_KEYWORDS, [s, r, fr]);
             let out = self.0.call(Some(NowArg::first(now_ms)), &inputs, tv, true)?;
             output(out)
         }
@@ -807,7 +847,8 @@ block_classes! {
             now_ns: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyIecOutput> {
             let now = NowArg { given: now, ms: now_ms, ns: now_ns };
-            let out = self.0.call(Some(now), &[("in_", in_), ("r", r)], pt, true)?;
+            let inputs = inputs(IEC_TIMER_KEYWORDS, [in_, r]);
+            let out = self.0.call(Some(now), &inputs, pt, true)?;
             output(out)
         }
 
@@ -901,7 +942,7 @@ block_classes! {
             ld: bool,
             pv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyCounterOutput> {
-            let inputs = [("cu", cu), ("cd", cd), ("r", r), ("ld", ld)];
+            let inputs = inputs(COUNTER_KEYWORDS, [cu, cd, r, ld]);
             output(self.0.call(None, &inputs, pv, true)?)
         }
 
@@ -947,7 +988,7 @@ block_classes! {
             fr: bool,
             pv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyS5CounterOutput> {
-            let inputs = [("cu", cu), ("cd", cd), ("s", s), ("r", r), ("fr", fr)];
+            let inputs = inputs(S5_COUNTER_KEYWORDS, [cu, cd, s, r, fr]);
             // PV matters only when S sets the counter.
             output(self.0.call(None, &inputs, pv, s)?)
         }
@@ -1014,6 +1055,10 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     check_fields::<PyIecOutput>(Block::Ton)?;
     check_fields::<PyCounterOutput>(Block::Ctu)?;
     check_fields::<PyS5CounterOutput>(Block::SCu)?;
+    check_keywords(&S5_TIMER_KEYWORDS, Block::SOdt)?;
+    check_keywords(&IEC_TIMER_KEYWORDS, Block::Ton)?;
+    check_keywords(&COUNTER_KEYWORDS, Block::Ctu)?;
+    check_keywords(&S5_COUNTER_KEYWORDS, Block::SCu)?;
     m.add_class::<PyS5Output>()?;
     m.add_class::<PyIecOutput>()?;
     m.add_class::<PyCounterOutput>()?;
