@@ -159,6 +159,83 @@ impl Outputs {
     }
 }
 
+impl Value {
+    /// The flag, `None` for a number or a word.
+    pub const fn as_bool(self) -> Option<bool> {
+        match self {
+            Value::Bool(b) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// The number, `None` for a flag or a word.
+    pub const fn as_int(self) -> Option<i128> {
+        match self {
+            Value::Int(i) => Some(i),
+            _ => None,
+        }
+    }
+}
+
+/// The most members a state has ([`Family::state_fields`]).
+pub const MAX_FIELDS: usize = 7;
+
+/// A state's members as values, in the order of its struct ([`Family::state_fields`]): what a
+/// front end saves of an instance (Python's pickle) to rebuild it with
+/// [`Family::state_from_fields`] and [`BlockOps::from_state`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Fields {
+    values: [Value; MAX_FIELDS],
+    len: u8,
+}
+
+impl Fields {
+    /// The members `values` (at most [`MAX_FIELDS`], checked when compiled).
+    pub const fn of<const N: usize>(values: [Value; N]) -> Fields {
+        const { assert!(N <= MAX_FIELDS) };
+        let mut all = [Value::Bool(false); MAX_FIELDS];
+        let mut i = 0;
+        while i < N {
+            all[i] = values[i];
+            i += 1;
+        }
+        Fields {
+            values: all,
+            len: N as u8,
+        }
+    }
+
+    /// The values.
+    pub fn as_slice(&self) -> &[Value] {
+        &self.values[..usize::from(self.len)]
+    }
+}
+
+/// What a program does to a block's instance data apart from the box call
+/// ([`BlockOps::access`]): the IEC timers' structure is read and written by coils
+/// (IEC-ACCESS-01, IEC-RT-01).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Access<P> {
+    /// Reads the member `port` (`Q`, `ET`), after the update an access makes.
+    Read(Port),
+    /// The `-(RT)-` coil with power flow: resets the timer data.
+    Reset,
+    /// The `-(PT)-` coil with power flow: loads the preset.
+    Preset(P),
+    /// A RUN-STOP-RUN transition of a retentive (`true`) or non-retentive structure.
+    RunStopRun(bool),
+}
+
+/// The block has no such [`Access`] to its instance data (every family but the IEC timers).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NoAccess;
+
+impl Display for NoAccess {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("the block's instance data have no such member or coil")
+    }
+}
+
 /// A family of blocks described once: its types and how the catalog's ports map onto them.
 /// Implemented by a marker type per family ([`crate::s5::S5Timers`],
 /// [`crate::iec::IecTimers`], [`crate::counter::Counters`], [`crate::counter::s5::S5Counters`]).
@@ -192,6 +269,14 @@ pub trait Family {
     /// Clock units per unit of the integer output while it runs (ET: 1, BI: the time base in
     /// ms), `None` when it does not change with time (CV).
     fn ramp(output: &Self::Output) -> Option<u64>;
+    /// The state's members in the order of its struct: a flag as [`Value::Bool`], a number as
+    /// [`Value::Int`] (an S5 time base in ms; the IEC timers' last instruction as 0 before the
+    /// first call, else 1 + its index in [`IecKind::ALL`](crate::iec::IecKind::ALL)).
+    fn state_fields(state: &Self::State) -> Fields;
+    /// The state whose members are `fields` ([`Family::state_fields`] read back), `None` when
+    /// they are not (a count, kind of value or number that no state has); whether an instance
+    /// can be in it is [`BlockOps::from_state`]'s check.
+    fn state_from_fields(fields: &[Value]) -> Option<Self::State>;
 }
 
 /// One implementation (reference or optimized) of a [`Family`]: what every front end calls.
@@ -207,16 +292,16 @@ pub trait BlockOps: Default + Copy + Debug + Send + Sync + 'static {
         State = Self::State,
         Preset = Self::Preset,
     >;
-    /// [`Family::Kind`].
-    type Kind: Copy + Eq + Debug + 'static;
+    /// [`Family::Kind`] (plain data as the instance is, so that a front end may hold both).
+    type Kind: Copy + Eq + Debug + Send + Sync + 'static;
     /// [`Family::Input`].
     type Input: Copy + Debug;
     /// [`Family::Output`].
     type Output: Copy + Debug + PartialEq;
     /// [`Family::State`].
     type State: Copy + Debug + PartialEq;
-    /// [`Family::Preset`].
-    type Preset: Copy + Debug + PartialEq + Display;
+    /// [`Family::Preset`] (plain data, as the kind).
+    type Preset: Copy + Debug + PartialEq + Display + Send + Sync + 'static;
     /// Whether [`BlockOps::call_explained`] gives the reference's rules (the optimized forms
     /// give none: they are proven equal to the reference, which is the one that explains).
     const EXPLAINS: bool;
@@ -233,6 +318,79 @@ pub trait BlockOps: Default + Copy + Debug + Send + Sync + 'static {
     ) -> Explained<Self::Output>;
     /// The observable state.
     fn state(&self) -> Self::State;
+    /// The CPU time of the previous call, which the ticks of the next one count from: the S5
+    /// timers keep it beside their state; 0 for the others, whose state holds all they need.
+    #[inline]
+    fn last_call(&self) -> Now<Self> {
+        CpuTime::from_ticks(0)
+    }
+    /// An instance in `state` whose previous call was at `last_call` (ignored by the families
+    /// that keep no such time): the round trip of [`BlockOps::state`] and
+    /// [`BlockOps::last_call`], through the family's checking constructor; `None` when no
+    /// instance can be in `state`.
+    ///
+    /// ```
+    /// use plc_timers::block::{BlockOps, Family, Implementation, Instruction, Signals, Visit};
+    /// use plc_timers::catalog::{Block, Port};
+    /// use plc_timers::time::CpuTime;
+    ///
+    /// /// Saves an instance half-way through its members and rebuilds it: it goes on as the
+    /// /// original does.
+    /// struct Resume;
+    /// impl Visit for Resume {
+    ///     type Out = bool;
+    ///     fn visit<B: BlockOps>(self, mut block: B, kind: B::Kind) -> bool {
+    ///         // 3 units, or 30 ms for an S5TIME (whose plain number is a word).
+    ///         let preset = B::parse_preset("3").or_else(|_| B::parse_preset("S5T#30MS"));
+    ///         let preset = preset.ok().expect("a preset");
+    ///         let (on, off) = (Signals::of(&Port::ALL), Signals::NONE);
+    ///         block.step(kind, CpuTime::from_ticks(5), on, preset);
+    ///         let fields = B::Family::state_fields(&block.state());
+    ///         let state = B::Family::state_from_fields(fields.as_slice()).expect("its own");
+    ///         let mut copy = B::from_state(state, block.last_call()).expect("a state it was in");
+    ///         (6..40).all(|t| {
+    ///             let signals = if t % 7 < 3 { on } else { off };
+    ///             let now = CpuTime::from_ticks(t * 10);
+    ///             block.step(kind, now, signals, preset) == copy.step(kind, now, signals, preset)
+    ///         })
+    ///     }
+    /// }
+    /// for block in Block::ALL {
+    ///     for imp in [Implementation::Reference, Implementation::Optimized] {
+    ///         assert!(Instruction::of(block).visit(imp, Resume), "{block}");
+    ///     }
+    /// }
+    /// ```
+    fn from_state(state: Self::State, last_call: Now<Self>) -> Option<Self>;
+    /// Reads or writes the instance data apart from the box call ([`Access`]) at `now`: the
+    /// member read, `None` for a coil or a mode change; [`NoAccess`] when the block's data
+    /// have no such member or coil (every family but the IEC timers).
+    ///
+    /// ```
+    /// use plc_timers::block::{Access, BlockOps, NoAccess, Value};
+    /// use plc_timers::catalog::Port;
+    /// use plc_timers::counter::CounterRef;
+    /// use plc_timers::iec::{IecInput, IecKind, IecTimer};
+    /// use plc_timers::time::CpuTime;
+    /// let mut ton = IecTimer::new();
+    /// let pt = plc_timers::time!("T#10MS");
+    /// BlockOps::call(&mut ton, IecKind::Ton, CpuTime::from_millis(0), IecInput::new(true, pt));
+    /// let q = ton.access(CpuTime::from_millis(10), Access::Read(Port::Q)); // update on access
+    /// assert_eq!(q, Ok(Some(Value::Bool(true))));
+    /// assert_eq!(ton.access(CpuTime::from_millis(10), Access::Reset), Ok(None)); // -(RT)-
+    /// assert_eq!(ton.access(CpuTime::from_millis(10), Access::Read(Port::Et)), Ok(Some(Value::Int(0))));
+    /// let mut ctu = CounterRef::<i16>::new();
+    /// assert_eq!(ctu.access(CpuTime::from_millis(0), Access::Reset), Err(NoAccess));
+    /// ```
+    #[inline]
+    fn access(
+        &mut self,
+        now: Now<Self>,
+        access: Access<Self::Preset>,
+    ) -> Result<Option<Value>, NoAccess> {
+        let _ = (now, access);
+        Err(NoAccess)
+    }
 
     /// One row through the ports: the coils that are at 1 in `signals` (a family's, such as
     /// the IEC timers' `-(RT)-`, as a network above the box's), then the box call with the
@@ -438,7 +596,8 @@ impl Display for Instruction {
 
 /// Implements [`BlockOps`] for an implementation `$t` of the family `$family`, whose own
 /// operations trait gives `call` and `state`: with the reference's explained call
-/// (`explains: |t, kind, now, input| ...`) or none (`unexplained`, an optimized form).
+/// (`explains: |t, kind, now, input| ...`) or none (`unexplained`, an optimized form); `from_state`
+/// rebuilds one from its state and last call, `last_call` gives it when the family keeps one.
 macro_rules! block_ops {
     (@types $family:ty) => {
         type Family = $family;
@@ -452,6 +611,8 @@ macro_rules! block_ops {
         impl[$($g:tt)*] $t:ty: $family:ty,
         call: |$s:ident, $kind:ident, $now:ident, $input:ident| $call:expr,
         state: $state:path,
+        from_state: |$fs:ident, $fl:ident| $from:expr,
+        $(last_call: $last:path,)?
         explains: |$es:ident, $ek:ident, $en:ident, $ei:ident| $explained:expr $(,)?
     ) => {
         impl<$($g)*> $crate::block::BlockOps for $t {
@@ -469,12 +630,23 @@ macro_rules! block_ops {
             fn state(&self) -> Self::State {
                 $state(self)
             }
+            #[allow(unused_variables)]
+            fn from_state($fs: Self::State, $fl: $crate::block::Now<Self>) -> Option<Self> {
+                $from
+            }
+            $(
+                fn last_call(&self) -> $crate::block::Now<Self> {
+                    $last(self)
+                }
+            )?
         }
     };
     (
         impl[$($g:tt)*] $t:ty: $family:ty,
         call: |$s:ident, $kind:ident, $now:ident, $input:ident| $call:expr,
-        state: $state:path $(,)?
+        state: $state:path,
+        from_state: |$fs:ident, $fl:ident| $from:expr
+        $(, last_call: $last:path)? $(,)?
     ) => {
         impl<$($g)*> $crate::block::BlockOps for $t {
             $crate::block::block_ops!(@types $family);
@@ -490,6 +662,15 @@ macro_rules! block_ops {
             fn state(&self) -> Self::State {
                 $state(self)
             }
+            #[allow(unused_variables)]
+            fn from_state($fs: Self::State, $fl: $crate::block::Now<Self>) -> Option<Self> {
+                $from
+            }
+            $(
+                fn last_call(&self) -> $crate::block::Now<Self> {
+                    $last(self)
+                }
+            )?
         }
     };
 }

@@ -397,12 +397,34 @@ impl<T: CounterInt> crate::block::Family for Counters<T> {
     fn ramp(_: &CounterOutput<T>) -> Option<u64> {
         None
     }
+
+    fn state_fields(s: &CounterState<T>) -> crate::block::Fields {
+        use crate::block::{Fields, Value};
+        Fields::of([
+            Value::Int(s.cv.to_i128()),
+            Value::Bool(s.cu_prev),
+            Value::Bool(s.cd_prev),
+        ])
+    }
+
+    fn state_from_fields(fields: &[crate::block::Value]) -> Option<CounterState<T>> {
+        let [cv, cu_prev, cd_prev] = *fields else {
+            return None;
+        };
+        Some(CounterState {
+            cv: T::from_i128(cv.as_int()?)?,
+            cu_prev: cu_prev.as_bool()?,
+            cd_prev: cd_prev.as_bool()?,
+        })
+    }
 }
 
 crate::block::block_ops! {
     impl[T: CounterInt] CounterRef<T>: Counters<T>,
     call: |c, kind, _now, input| CounterOps::call(c, kind, input),
     state: CounterOps::state,
+    // Every counter state is one a counter can be in.
+    from_state: |state, _last_call| Some(CounterRef::from_state(state)),
     explains: |c, kind, _now, input| c.call_explained(kind, input),
 }
 
@@ -410,4 +432,5 @@ crate::block::block_ops! {
     impl[T: CounterInt] Counter<T>: Counters<T>,
     call: |c, kind, _now, input| CounterOps::call(c, kind, input),
     state: CounterOps::state,
+    from_state: |state, _last_call| Some(Counter::from_state(state)),
 }

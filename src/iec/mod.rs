@@ -295,6 +295,98 @@ impl<C: ClockWord, D: IecDuration> crate::block::Family for IecTimers<C, D> {
     fn ramp(_: &IecOutput<C>) -> Option<u64> {
         Some(1)
     }
+
+    fn state_fields(s: &IecState<C>) -> crate::block::Fields {
+        use crate::block::{Fields, Value};
+        let kind = s
+            .kind
+            .and_then(|k| IecKind::ALL.iter().position(|&a| a == k))
+            .map_or(0, |i| i as i128 + 1);
+        let word = |w: C| Value::Int(i128::from(w.to_u64()));
+        Fields::of([
+            Value::Int(kind),
+            Value::Bool(s.input),
+            Value::Bool(s.running),
+            word(s.start),
+            word(s.pt),
+            word(s.et),
+            Value::Bool(s.q),
+        ])
+    }
+
+    fn state_from_fields(fields: &[crate::block::Value]) -> Option<IecState<C>> {
+        let [kind, input, running, start, pt, et, q] = *fields else {
+            return None;
+        };
+        // A clock word of `C`, not wider.
+        let word = |v: crate::block::Value| {
+            let v = u64::try_from(v.as_int()?).ok()?;
+            (v <= C::MAX.to_u64()).then(|| C::from_u64_wrapping(v))
+        };
+        let kind = match usize::try_from(kind.as_int()?).ok()? {
+            0 => None,
+            i => Some(*IecKind::ALL.get(i - 1)?),
+        };
+        Some(IecState {
+            kind,
+            input: input.as_bool()?,
+            running: running.as_bool()?,
+            start: word(start)?,
+            pt: word(pt)?,
+            et: word(et)?,
+            q: q.as_bool()?,
+        })
+    }
+}
+
+/// The state, its round trip and the access of [`BlockOps`](crate::block::BlockOps), the same
+/// for both implementations `$t` (whose own `from_state` checks the state).
+macro_rules! state_and_access {
+    ($t:ident) => {
+        fn state(&self) -> IecState<C> {
+            IecTimerOps::state(self)
+        }
+
+        fn from_state(state: IecState<C>, _last_call: CpuTime<D::Unit>) -> Option<Self> {
+            $t::from_state(state)
+        }
+
+        fn access(
+            &mut self,
+            now: CpuTime<D::Unit>,
+            a: crate::block::Access<D>,
+        ) -> Result<Option<crate::block::Value>, crate::block::NoAccess> {
+            access(self, now, a)
+        }
+    };
+}
+
+/// [`BlockOps::access`](crate::block::BlockOps::access) of both implementations: the reads and
+/// coils of [`IecTimerOps`].
+fn access<C: ClockWord, D: IecDuration, T: IecTimerOps<C, D>>(
+    timer: &mut T,
+    now: CpuTime<D::Unit>,
+    access: crate::block::Access<D>,
+) -> Result<Option<crate::block::Value>, crate::block::NoAccess> {
+    use crate::block::{Access, NoAccess, Value};
+    use crate::catalog::Port;
+    Ok(match access {
+        Access::Read(Port::Q) => Some(Value::Bool(timer.read_q(now))),
+        Access::Read(Port::Et) => Some(Value::Int(i128::from(timer.read_et(now).to_u64()))),
+        Access::Read(_) => return Err(NoAccess),
+        Access::Reset => {
+            timer.reset_timer();
+            None
+        }
+        Access::Preset(pt) => {
+            timer.preset_timer(pt);
+            None
+        }
+        Access::RunStopRun(retentive) => {
+            timer.run_stop_run(retentive);
+            None
+        }
+    })
 }
 
 /// The `-(RT)-` coil of a row (IEC-RT-01), run before the box call as a network above the
@@ -321,9 +413,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerRef<C, D> 
         IecTimerRef::call_explained(self, kind, now, input)
     }
 
-    fn state(&self) -> IecState<C> {
-        IecTimerOps::state(self)
-    }
+    state_and_access!(IecTimerRef);
 
     fn step(
         &mut self,
@@ -379,9 +469,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerOf<C, D> {
         crate::block::unexplained(IecTimerOps::call(self, kind, now, input))
     }
 
-    fn state(&self) -> IecState<C> {
-        IecTimerOps::state(self)
-    }
+    state_and_access!(IecTimerOf);
 
     #[inline]
     fn step(

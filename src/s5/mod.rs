@@ -366,12 +366,45 @@ impl crate::block::Family for S5Timers {
             crate::time::TimeBase::from_bits((o.bcd >> 12 & 3) as u8).millis(),
         ))
     }
+
+    fn state_fields(s: &S5State) -> crate::block::Fields {
+        use crate::block::{Fields, Value};
+        Fields::of([
+            Value::Bool(s.running),
+            Value::Int(i128::from(s.value)),
+            Value::Int(i128::from(s.base.millis())),
+            Value::Bool(s.q),
+            Value::Bool(s.q_on_expiry),
+            Value::Bool(s.s_prev),
+            Value::Bool(s.fr_prev),
+        ])
+    }
+
+    fn state_from_fields(fields: &[crate::block::Value]) -> Option<S5State> {
+        let [running, value, base, q, q_on_expiry, s_prev, fr_prev] = *fields else {
+            return None;
+        };
+        let base_ms = base.as_int()?;
+        Some(S5State {
+            running: running.as_bool()?,
+            value: u16::try_from(value.as_int()?).ok()?,
+            base: crate::time::TimeBase::ALL
+                .into_iter()
+                .find(|b| i128::from(b.millis()) == base_ms)?,
+            q: q.as_bool()?,
+            q_on_expiry: q_on_expiry.as_bool()?,
+            s_prev: s_prev.as_bool()?,
+            fr_prev: fr_prev.as_bool()?,
+        })
+    }
 }
 
 crate::block::block_ops! {
     impl[] S5TimerRef: S5Timers,
     call: |t, kind, now, input| S5TimerOps::call(t, kind, now, input),
     state: S5TimerOps::state,
+    from_state: |state, last_call| S5TimerRef::from_state(state, last_call),
+    last_call: S5TimerRef::last_call,
     explains: |t, kind, now, input| t.call_explained(kind, now, input),
 }
 
@@ -379,4 +412,6 @@ crate::block::block_ops! {
     impl[] S5Timer: S5Timers,
     call: |t, kind, now, input| S5TimerOps::call(t, kind, now, input),
     state: S5TimerOps::state,
+    from_state: |state, last_call| S5Timer::from_state(state, last_call),
+    last_call: S5Timer::last_call,
 }

@@ -1,8 +1,9 @@
 //! Arguments from Python, checked: each reader turns a Python object into a core value or into a
 //! Python exception that says what was wrong and what is allowed.
 
-use plc_timers::catalog::{Block, Family};
+use plc_timers::catalog::{Block, DataType, Family};
 use plc_timers::counter::s5::{CounterPreset, CounterPresetError};
+use plc_timers::counter::CounterInt;
 use plc_timers::time::{CpuTime, LTime, LiteralError, LiteralErrorKind, S5Time, Time};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -301,5 +302,61 @@ pub fn block_of(name: &str, family: Family, what: &str) -> PyResult<Block> {
             "{what} `{name}` is not one of {}",
             names()
         ))),
+    }
+}
+
+/// The range of the integer data type `t` (SINT … ULINT), `None` for another data type.
+pub fn int_limits(t: DataType) -> Option<(i128, i128)> {
+    fn of<T: CounterInt>() -> Option<(i128, i128)> {
+        Some((T::MIN.to_i128(), T::MAX.to_i128()))
+    }
+    match t {
+        DataType::SInt => of::<i8>(),
+        DataType::Int => of::<i16>(),
+        DataType::DInt => of::<i32>(),
+        DataType::LInt => of::<i64>(),
+        DataType::USInt => of::<u8>(),
+        DataType::UInt => of::<u16>(),
+        DataType::UDInt => of::<u32>(),
+        DataType::ULInt => of::<u64>(),
+        _ => None,
+    }
+}
+
+/// An IEC counter preset of the integer data type `t`: an int inside its range.
+pub fn int_preset(obj: &Bound<'_, PyAny>, t: DataType, what: &str) -> PyResult<i128> {
+    let Some((lo, hi)) = int_limits(t) else {
+        return Err(PyValueError::new_err(format!("{t} is not an integer type")));
+    };
+    let v: i128 = int_in(obj, what, &format!("an int of {t}, {lo}..={hi}"))?;
+    if v < lo || v > hi {
+        return Err(PyValueError::new_err(format!(
+            "{what} is an int of {t}, {lo}..={hi}; got {v}"
+        )));
+    }
+    Ok(v)
+}
+
+/// A preset of the data type `t` read from Python by that type's reader ([`s5time`], [`time`],
+/// [`ltime`], [`counter_preset`], [`int_preset`]), as the int that the reader takes back for
+/// it (what pickle saves): the word of an S5TIME, the milliseconds of a TIME, the nanoseconds
+/// of an LTIME, the count.
+pub fn preset(obj: &Bound<'_, PyAny>, t: DataType, what: &str) -> PyResult<i128> {
+    match t {
+        DataType::S5Time => s5time(obj, what).map(|v| v.to_word().into()),
+        DataType::Time => time(obj, what).map(|v| v.as_millis().into()),
+        DataType::LTime => ltime(obj, what).map(|v| v.as_nanos().into()),
+        DataType::Word => counter_preset(obj, what).map(|v| v.value().into()),
+        _ => int_preset(obj, t, what),
+    }
+}
+
+/// A preset that [`preset`] read, as the text of the data type `t` for the block's own
+/// preset parser: a plain number (milliseconds, nanoseconds, a count), the word of an S5TIME
+/// (whose plain number is not one: a word keeps the time base).
+pub fn preset_text(t: DataType, v: i128) -> String {
+    match t {
+        DataType::S5Time => format!("W#16#{v:04X}"),
+        _ => v.to_string(),
     }
 }

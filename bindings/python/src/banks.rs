@@ -7,16 +7,16 @@ use std::sync::{Mutex, MutexGuard, PoisonError};
 use std::time::Instant;
 
 use numpy::{Element, PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
+use plc_timers::block::Instruction;
+use plc_timers::catalog::{Block, DataType};
 use plc_timers::counter::{BankInputs, CounterBank, CounterInt, CounterState};
 use plc_timers::iec::{IecState, TonBank};
 use plc_timers::time::{CpuTime, Time};
-use plc_timers_trace::IntType;
 use pyo3::exceptions::{PyImportError, PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple, PyType};
 
 use crate::args::{self, forward, shown, type_name};
-use crate::blocks::{counter_pv, int_type};
 
 /// Lanes per core bank: a multiple of the TON kernel's 16 lanes, small enough that a chunk's
 /// inputs and state stay in the first-level cache while it is scanned.
@@ -669,17 +669,18 @@ type CounterBankReduce<'py> = (
 );
 
 /// The numpy dtype name of the integer type `t`.
-fn dtype_of(t: IntType) -> &'static str {
-    match t {
-        IntType::SInt => "int8",
-        IntType::Int => "int16",
-        IntType::DInt => "int32",
-        IntType::LInt => "int64",
-        IntType::USInt => "uint8",
-        IntType::UInt => "uint16",
-        IntType::UDInt => "uint32",
-        IntType::ULInt => "uint64",
-    }
+fn dtype_of(t: DataType) -> Option<&'static str> {
+    Some(match t {
+        DataType::SInt => "int8",
+        DataType::Int => "int16",
+        DataType::DInt => "int32",
+        DataType::LInt => "int64",
+        DataType::USInt => "uint8",
+        DataType::UInt => "uint16",
+        DataType::UDInt => "uint32",
+        DataType::ULInt => "uint64",
+        _ => return None,
+    })
 }
 
 /// `n` CTUD counters of one integer type called together once per scan with one preset, each
@@ -697,7 +698,7 @@ fn dtype_of(t: IntType) -> &'static str {
 pub struct PyCounterBank {
     bank: Box<dyn AnyBank>,
     n: usize,
-    int_type: IntType,
+    int_type: DataType,
 }
 
 #[pymethods]
@@ -708,16 +709,29 @@ impl PyCounterBank {
     fn new(py: Python<'_>, n: &Bound<'_, PyAny>, r#type: &str) -> PyResult<Self> {
         numpy_or_import_error(py)?;
         let n = lanes(n)?;
-        let t = int_type(r#type)?;
+        // The bank's counters are CTUD's: their data types are CTUD's.
+        let t = DataType::lookup(r#type.trim())
+            .and_then(|t| Instruction::new(Block::Ctud, t).ok())
+            .map(Instruction::data_type)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Block::Ctud.data_types().iter().map(|t| t.name()).collect();
+                PyValueError::new_err(format!(
+                    "unknown integer type `{}`; type is one of {}",
+                    r#type,
+                    names.join(" ")
+                ))
+            })?;
+        let dtype = dtype_of(t).unwrap_or("int16");
         let bank = match t {
-            IntType::SInt => lanes_of::<i8>(n, dtype_of(t)),
-            IntType::Int => lanes_of::<i16>(n, dtype_of(t)),
-            IntType::DInt => lanes_of::<i32>(n, dtype_of(t)),
-            IntType::LInt => lanes_of::<i64>(n, dtype_of(t)),
-            IntType::USInt => lanes_of::<u8>(n, dtype_of(t)),
-            IntType::UInt => lanes_of::<u16>(n, dtype_of(t)),
-            IntType::UDInt => lanes_of::<u32>(n, dtype_of(t)),
-            IntType::ULInt => lanes_of::<u64>(n, dtype_of(t)),
+            DataType::SInt => lanes_of::<i8>(n, dtype),
+            DataType::DInt => lanes_of::<i32>(n, dtype),
+            DataType::LInt => lanes_of::<i64>(n, dtype),
+            DataType::USInt => lanes_of::<u8>(n, dtype),
+            DataType::UInt => lanes_of::<u16>(n, dtype),
+            DataType::UDInt => lanes_of::<u32>(n, dtype),
+            DataType::ULInt => lanes_of::<u64>(n, dtype),
+            // INT, the one left of the types CTUD takes.
+            _ => lanes_of::<i16>(n, dtype),
         };
         Ok(PyCounterBank {
             bank,
@@ -754,7 +768,7 @@ impl PyCounterBank {
         out: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let n = self.n;
-        let pv = counter_pv(pv, self.int_type, "pv")?;
+        let pv = args::int_preset(pv, self.int_type, "pv")?;
         let read = |a: Option<&Bound<'py, PyAny>>, what: &str| {
             a.map(|a| bool_bytes(a, what, n)).transpose()
         };
@@ -842,7 +856,7 @@ impl PyCounterBank {
             )));
         }
         self.bank.set_states(&states).map_err(|i| {
-            let (lo, hi) = self.int_type.limits();
+            let (lo, hi) = args::int_limits(self.int_type).unwrap_or_default();
             PyValueError::new_err(format!(
                 "the CV of counter {i}, {}, is outside {}, {lo}..={hi}",
                 states[i].0,

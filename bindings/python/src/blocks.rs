@@ -1,31 +1,23 @@
-//! Every block as a Python class, reference or optimized (`optimized=True`), driven through the
-//! core's interface traits, so that both implementations are called by the same code. Outputs
-//! are small immutable objects with named fields.
+//! Every block as a Python class, reference or optimized (`optimized=True`), written once
+//! against the core's block interface: one object-safe trait, `DynBlock`, with a blanket
+//! implementation over [`BlockOps`], built by [`Instruction::visit`] (the one table of the
+//! families, implementations and data types). A keyword argument names a port of the catalog
+//! (`in_` for `IN`), the preset is read by the block's own parser, the outputs come in the
+//! catalog's order, a pickle holds the state's members: the classes differ only in their
+//! Python signatures and output class. Outputs are small immutable objects with named fields.
 
-use std::marker::PhantomData;
-
-use plc_timers::block::Instruction;
-use plc_timers::catalog::DataType;
-use plc_timers::catalog::{Block, Kind, Port};
-use plc_timers::counter::s5::{
-    CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
-    S5CounterRef, S5CounterState,
+use plc_timers::block::{
+    Access, BlockOps, Family as _, Fields, Instruction, Outputs, Signals, Value, Visit,
 };
-use plc_timers::counter::{
-    Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
-    CounterState,
-};
-use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef};
-use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
-use plc_timers::time::{
-    clock::ClockWord, CpuTime, IecDuration, LTime, S5Time, Time, TimeBase, TimeUnit,
-};
-use plc_timers_trace::{preset_option, IntType};
+use plc_timers::catalog::{Block, DataType, Port, PresetKind, ValueKind};
+use plc_timers::counter::s5::S5CounterOutput;
+use plc_timers::s5::S5Output;
+use plc_timers::time::CpuTime;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyType;
+use pyo3::types::{PyBool, PyTuple, PyType};
 
-use crate::args::{self, forward, now_ms};
+use crate::args;
 
 // ---------------------------------------------------------------------------------------------
 // Outputs
@@ -47,6 +39,16 @@ macro_rules! output_class {
             $($(#[doc = $fdoc])* pub $field: $t,)+
         }
 
+        impl OutputClass for $py {
+            const FIELDS: &'static [&'static str] = &[$(stringify!($field)),+];
+
+            fn from_outputs(values: &[Value]) -> Option<Self> {
+                let mut values = values.iter().copied();
+                let out = $py { $($field: FromValue::from_value(values.next()?)?),+ };
+                values.next().is_none().then_some(out)
+            }
+        }
+
         #[pymethods]
         impl $py {
             #[doc = $new_doc]
@@ -66,6 +68,38 @@ macro_rules! output_class {
             }
         }
     };
+}
+
+/// A field's type, read from an output's [`Value`].
+trait FromValue: Sized {
+    fn from_value(v: Value) -> Option<Self>;
+}
+
+impl FromValue for bool {
+    fn from_value(v: Value) -> Option<bool> {
+        v.as_bool()
+    }
+}
+
+impl FromValue for u16 {
+    fn from_value(v: Value) -> Option<u16> {
+        match v {
+            Value::Word(w) => Some(w),
+            v => u16::try_from(v.as_int()?).ok(),
+        }
+    }
+}
+
+impl FromValue for u64 {
+    fn from_value(v: Value) -> Option<u64> {
+        u64::try_from(v.as_int()?).ok()
+    }
+}
+
+impl FromValue for i128 {
+    fn from_value(v: Value) -> Option<i128> {
+        v.as_int()
+    }
 }
 
 /// An integer field as Python writes it.
@@ -168,6 +202,146 @@ pub fn py_bool(b: bool) -> &'static str {
     }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Any block behind one object
+
+/// The block of `block`'s family with the most outputs (CTUD among the IEC counters): an output
+/// class carries its outputs, which the output struct of every block of the family holds (CTU's
+/// QD too).
+fn widest(block: Block) -> Block {
+    Block::ALL
+        .into_iter()
+        .filter(|b| b.family() == block.family())
+        .fold(block, |w, b| {
+            if b.outputs().len() > w.outputs().len() {
+                b
+            } else {
+                w
+            }
+        })
+}
+
+/// A port's Python keyword: its name lower-cased, `in_` for `IN` (a Python keyword).
+fn keyword(port: Port) -> String {
+    match port {
+        Port::In => "in_".to_string(),
+        p => p.name().to_ascii_lowercase(),
+    }
+}
+
+/// The port a keyword argument names ([`keyword`], compared without building it: once per
+/// input of every call).
+fn port_of(name: &str) -> Option<Port> {
+    Port::ALL.into_iter().find(|&p| match p {
+        Port::In => name == "in_",
+        p => p.name().eq_ignore_ascii_case(name) && !name.bytes().any(|b| b.is_ascii_uppercase()),
+    })
+}
+
+/// Any block, data type and implementation behind one object-safe interface (times in whole
+/// units of its clock, presets as text of its data type), so that the Python classes are
+/// written once. Its one implementation is [`Held`], over every [`BlockOps`].
+trait DynBlock: Send + Sync {
+    fn clone_box(&self) -> Box<dyn DynBlock>;
+    /// Sets (or clears) the block's own preset, read from text by the block's parser.
+    fn set_preset(&mut self, text: Option<&str>) -> Result<(), String>;
+    /// The block's own preset as its literal, if it has one.
+    fn preset(&self) -> Option<String>;
+    /// One row at `now` (clock units) with the inputs and coils `signals` and this call's
+    /// preset `text`, else the block's own: the outputs of the family's widest box.
+    fn call(&mut self, now: u64, signals: Signals, text: Option<&str>) -> Result<Outputs, String>;
+    /// An access to the instance data ([`BlockOps::access`]), a preset as text.
+    fn access(&mut self, now: u64, access: Access<&str>) -> Result<Option<Value>, String>;
+    /// The state's members.
+    fn fields(&self) -> Fields;
+    /// Puts the block in the state of members `fields`, its previous call at `last_call`;
+    /// `false` (and the block unchanged) when no block of its kind can be in it.
+    fn restore(&mut self, fields: &[Value], last_call: u64) -> bool;
+}
+
+/// A block `B` executing `kind`, with the kind whose outputs the Python output class carries
+/// (`wide`, [`widest`]) and its own preset.
+struct Held<B: BlockOps> {
+    block: B,
+    kind: B::Kind,
+    wide: B::Kind,
+    preset: Option<B::Preset>,
+}
+
+impl<B: BlockOps> Held<B> {
+    fn parse(text: &str) -> Result<B::Preset, String> {
+        B::parse_preset(text).map_err(|e| e.to_string())
+    }
+}
+
+impl<B: BlockOps> DynBlock for Held<B> {
+    fn clone_box(&self) -> Box<dyn DynBlock> {
+        Box::new(Held::<B> { ..*self })
+    }
+
+    fn set_preset(&mut self, text: Option<&str>) -> Result<(), String> {
+        self.preset = text.map(Self::parse).transpose()?;
+        Ok(())
+    }
+
+    fn preset(&self) -> Option<String> {
+        self.preset.map(|p| p.to_string())
+    }
+
+    fn call(&mut self, now: u64, signals: Signals, text: Option<&str>) -> Result<Outputs, String> {
+        let preset = match (text, self.preset) {
+            (Some(text), _) => Self::parse(text)?,
+            (None, Some(p)) => p,
+            (None, None) => return Err("no preset".to_string()),
+        };
+        let out = self
+            .block
+            .step(self.kind, CpuTime::from_ticks(now), signals, preset);
+        Ok(B::values(self.wide, &out))
+    }
+
+    fn access(&mut self, now: u64, access: Access<&str>) -> Result<Option<Value>, String> {
+        let access = match access {
+            Access::Read(port) => Access::Read(port),
+            Access::Reset => Access::Reset,
+            Access::Preset(text) => Access::Preset(Self::parse(text)?),
+            Access::RunStopRun(retentive) => Access::RunStopRun(retentive),
+        };
+        self.block
+            .access(CpuTime::from_ticks(now), access)
+            .map_err(|e| e.to_string())
+    }
+
+    fn fields(&self) -> Fields {
+        B::Family::state_fields(&self.block.state())
+    }
+
+    fn restore(&mut self, fields: &[Value], last_call: u64) -> bool {
+        let block = B::Family::state_from_fields(fields)
+            .and_then(|state| B::from_state(state, CpuTime::from_ticks(last_call)));
+        if let Some(block) = block {
+            self.block = block;
+        }
+        block.is_some()
+    }
+}
+
+/// Builds the [`Held`] block of a catalog block for [`Instruction::visit`].
+struct Build(Block);
+
+impl Visit for Build {
+    type Out = Option<Box<dyn DynBlock>>;
+    fn visit<B: BlockOps>(self, block: B, kind: B::Kind) -> Self::Out {
+        let wide = B::Family::kind(widest(self.0))?;
+        Some(Box::new(Held {
+            block,
+            kind,
+            wide,
+            preset: None,
+        }))
+    }
+}
+
 /// The error for a pickled state that no block of this kind can be in.
 fn bad_state(block: Block) -> PyErr {
     PyValueError::new_err(format!(
@@ -189,28 +363,314 @@ fn has_input(block: Block, port: Port, value: bool) -> PyResult<()> {
     Ok(())
 }
 
-/// The preset of a call: the call's own, else the block's, else an error naming both places.
-fn preset<T: Copy>(
-    block: Block,
-    given: Option<&Bound<'_, PyAny>>,
-    default: Option<T>,
-    read: impl FnOnce(&Bound<'_, PyAny>, &str) -> PyResult<T>,
-) -> PyResult<T> {
-    let name = preset_option(block);
-    match (given, default) {
-        (Some(obj), _) => read(obj, name),
-        (None, Some(v)) => Ok(v),
-        (None, None) => Err(PyValueError::new_err(format!(
-            "{block} needs its {name}: give {name}= to {block}(…) or to call()"
-        ))),
+/// The instruction `block` on the data type named `type_name` (ASCII case ignored), or a
+/// `ValueError` naming the data types the block takes.
+fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
+    let takes = || {
+        let names: Vec<&str> = block.data_types().iter().map(|t| t.name()).collect();
+        names.join(" ")
+    };
+    let data_type = DataType::lookup(type_name.trim()).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown data type `{type_name}`; {block} takes {}",
+            takes()
+        ))
+    })?;
+    Instruction::new(block, data_type).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The CPU time of a call as Python gave it: first (`given`), or by the keyword of its unit
+/// (`now_ms=`, `now_ns=`); exactly one, that of the block's clock.
+struct NowArg<'a, 'py> {
+    given: Option<&'a Bound<'py, PyAny>>,
+    ms: Option<&'a Bound<'py, PyAny>>,
+    ns: Option<&'a Bound<'py, PyAny>>,
+}
+
+impl<'a, 'py> NowArg<'a, 'py> {
+    /// The time given first (or by the only keyword a block on a clock in ms has).
+    fn first(given: &'a Bound<'py, PyAny>) -> Self {
+        NowArg {
+            given: Some(given),
+            ms: None,
+            ns: None,
+        }
     }
 }
 
-/// The Python classes of one family's blocks: each a class around the family's block `$inner`
-/// with the family's own methods (the braces: the constructor and the calls, which name the
-/// class's catalog block `Self::BLOCK`), and what every block class does the same way, written
-/// here once: the implementation it drives, copies, pickle (the class called with the block's
-/// `newargs()`, then its `getstate()`), `repr`.
+/// What pickle saves of a block (`__reduce__`): optimized, its preset (the int its data type's
+/// reader takes back, [`args::preset`]), the last `now`, the state's members
+/// ([`plc_timers::block::Family::state_fields`]); the data type is an argument of the class when
+/// it takes several.
+type Pickle<'py> = (
+    bool,
+    Option<Bound<'py, PyAny>>,
+    Option<u64>,
+    Vec<Bound<'py, PyAny>>,
+);
+
+/// A block of one kind and data type, reference or optimized, as every class holds it.
+pub struct BlockCore {
+    instruction: Instruction,
+    optimized: bool,
+    inner: Box<dyn DynBlock>,
+    /// The block's own preset as [`args::preset`] read it.
+    preset: Option<i128>,
+    /// The last `now`, which the next must not precede (timers only).
+    last: Option<u64>,
+}
+
+impl Clone for BlockCore {
+    fn clone(&self) -> Self {
+        BlockCore {
+            inner: self.inner.clone_box(),
+            ..*self
+        }
+    }
+}
+
+impl BlockCore {
+    /// `block` on the data type named `type_name` (its default when `None`), with the preset
+    /// `preset`, of the implementation `optimized`.
+    fn new(
+        block: Block,
+        preset: Option<&Bound<'_, PyAny>>,
+        type_name: Option<&str>,
+        optimized: bool,
+    ) -> PyResult<BlockCore> {
+        let instruction = match type_name {
+            None => Instruction::of(block),
+            Some(name) => instruction(block, name)?,
+        };
+        let imp = if optimized {
+            plc_timers::block::Implementation::Optimized
+        } else {
+            plc_timers::block::Implementation::Reference
+        };
+        let inner = instruction.visit(imp, Build(block)).ok_or_else(|| {
+            PyValueError::new_err(format!("{block} is not a block of its family"))
+        })?;
+        let mut core = BlockCore {
+            instruction,
+            optimized,
+            inner,
+            preset: None,
+            last: None,
+        };
+        core.set_preset(preset)?;
+        Ok(core)
+    }
+
+    fn block(&self) -> Block {
+        self.instruction.block()
+    }
+
+    /// The preset's keyword (`tv`, `pt`, `pv`).
+    fn preset_name(&self) -> String {
+        keyword(self.block().preset().port)
+    }
+
+    /// A preset from Python as the text of the block's data type, and the int pickle saves.
+    fn read_preset(&self, obj: &Bound<'_, PyAny>) -> PyResult<(i128, String)> {
+        let t = self.instruction.data_type();
+        let v = args::preset(obj, t, &self.preset_name())?;
+        Ok((v, args::preset_text(t, v)))
+    }
+
+    /// Sets (or clears) the block's own preset.
+    fn set_preset(&mut self, obj: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let read = obj.map(|o| self.read_preset(o)).transpose()?;
+        self.inner
+            .set_preset(read.as_ref().map(|(_, text)| text.as_str()))
+            .map_err(PyValueError::new_err)?;
+        self.preset = read.map(|(v, _)| v);
+        Ok(())
+    }
+
+    /// The CPU time of a call, given positionally (in the block's unit) or by the keyword of
+    /// the block's unit (`now_ms`, `now_ns`), not before the previous call's.
+    fn at(&mut self, now: NowArg<'_, '_>) -> PyResult<u64> {
+        let unit = self.instruction.clock_unit();
+        let keyword = format!("now_{unit}");
+        let given = match (now.given, now.ms, now.ns) {
+            (Some(t), None, None) => t,
+            (None, Some(t), None) if unit == "ms" => t,
+            (None, None, Some(t)) if unit == "ns" => t,
+            (None, None, None) => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} needs the CPU time: give it first or as {keyword}= (whole {unit})",
+                    self.instruction
+                )))
+            }
+            _ => {
+                return Err(PyTypeError::new_err(format!(
+                    "{} runs on a clock in {unit}: give the CPU time once, first or as \
+                     {keyword}=",
+                    self.instruction
+                )))
+            }
+        };
+        let now = args::clock(given, unit)?;
+        args::forward_in(now, self.last, unit)?;
+        self.last = Some(now);
+        Ok(now)
+    }
+
+    /// One call with the boolean inputs and coils named by their keywords (`inputs`; one the
+    /// block lacks must be False), the preset of this call (`preset`) or the block's, at `now`
+    /// (`None` for a counter); `needs_preset`: whether this call reads the preset (an S5
+    /// counter's only when S sets it; a call without one then runs with 0). Returns the
+    /// outputs of the family's widest box.
+    fn call(
+        &mut self,
+        now: Option<NowArg<'_, '_>>,
+        inputs: &[(&str, bool)],
+        preset: Option<&Bound<'_, PyAny>>,
+        needs_preset: bool,
+    ) -> PyResult<Outputs> {
+        let block = self.block();
+        let mut signals = Signals::NONE;
+        for &(name, on) in inputs {
+            let port = port_of(name)
+                .ok_or_else(|| PyTypeError::new_err(format!("{block} has no input `{name}`")))?;
+            has_input(block, port, on)?;
+            signals = signals.set(port, on);
+        }
+        let text = match (preset, self.preset) {
+            (Some(obj), _) => Some(self.read_preset(obj)?.1),
+            (None, Some(_)) => None,
+            (None, None) if !needs_preset => Some("0".to_string()),
+            (None, None) => {
+                let name = self.preset_name();
+                return Err(PyValueError::new_err(format!(
+                    "{block} needs its {name}: give {name}= to {block}(…) or to call()"
+                )));
+            }
+        };
+        let now = match now {
+            Some(now) => self.at(now)?,
+            None => 0,
+        };
+        self.inner
+            .call(now, signals, text.as_deref())
+            .map_err(PyValueError::new_err)
+    }
+
+    /// Reads the member `port` of the instance data at `now`.
+    fn read(&mut self, now: NowArg<'_, '_>, port: Port) -> PyResult<Value> {
+        let now = self.at(now)?;
+        match self.inner.access(now, Access::Read(port)) {
+            Ok(Some(v)) => Ok(v),
+            Ok(None) => Err(PyValueError::new_err(format!(
+                "{} has no member {}",
+                self.block(),
+                port.name()
+            ))),
+            Err(e) => Err(PyValueError::new_err(e)),
+        }
+    }
+
+    /// A coil or mode change on the instance data (no time: it reads no clock).
+    fn write(&mut self, access: Access<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let text;
+        let access = match access {
+            Access::Preset(obj) => {
+                text = self.read_preset(obj)?.1;
+                Access::Preset(text.as_str())
+            }
+            Access::Read(p) => Access::Read(p),
+            Access::Reset => Access::Reset,
+            Access::RunStopRun(r) => Access::RunStopRun(r),
+        };
+        // The time of the last call: a coil does not move the clock.
+        let now = self.last.unwrap_or(0);
+        self.inner
+            .access(now, access)
+            .map(|_| ())
+            .map_err(PyValueError::new_err)
+    }
+
+    /// The constructor's arguments for pickle: the data type when the block takes several
+    /// (the preset is in the state).
+    fn newargs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        if self.block().data_types().len() > 1 {
+            let args = (py.None(), self.instruction.data_type().name());
+            args.into_pyobject(py)
+        } else {
+            Ok(PyTuple::empty(py))
+        }
+    }
+
+    fn getstate<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        let mut members = Vec::new();
+        for v in self.inner.fields().as_slice() {
+            members.push(match *v {
+                Value::Bool(b) => PyBool::new(py, b).to_owned().into_any(),
+                Value::Int(i) => i.into_pyobject(py)?.into_any(),
+                Value::Word(w) => w.into_pyobject(py)?.into_any(),
+            });
+        }
+        let members = PyTuple::new(py, members)?;
+        (self.optimized, self.preset, self.last, members).into_pyobject(py)
+    }
+
+    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let bad = || bad_state(self.block());
+        let (optimized, preset, last, members): Pickle<'_> = state.extract().map_err(|_| bad())?;
+        let fields = members
+            .iter()
+            .map(|m| {
+                if m.is_instance_of::<PyBool>() {
+                    m.extract::<bool>().ok().map(Value::Bool)
+                } else {
+                    m.extract::<i128>().ok().map(Value::Int)
+                }
+            })
+            .collect::<Option<Vec<Value>>>()
+            .ok_or_else(bad)?;
+        let mut restored = BlockCore::new(
+            self.block(),
+            None,
+            Some(self.instruction.data_type().name()),
+            optimized,
+        )?;
+        // A preset the data type does not take is no block's.
+        restored.set_preset(preset.as_ref()).map_err(|_| bad())?;
+        // The core's last call is the last `now`: here time never goes back.
+        if !restored.inner.restore(&fields, last.unwrap_or(0)) {
+            return Err(bad());
+        }
+        restored.last = last;
+        *self = restored;
+        Ok(())
+    }
+
+    fn repr(&self) -> String {
+        let block = self.block();
+        let preset = match self.inner.preset() {
+            None => "None".to_string(),
+            // An integer preset is written as the int it is.
+            Some(p) if block.preset().kind == PresetKind::Integer => p,
+            Some(p) => format!("{p:?}"),
+        };
+        let data_type = self.instruction.data_type();
+        let ty = if data_type == block.default_data_type() {
+            String::new()
+        } else {
+            format!(", type={:?}", data_type.name())
+        };
+        format!(
+            "{block}({}={preset}{ty}, optimized={})",
+            self.preset_name(),
+            py_bool(self.optimized)
+        )
+    }
+}
+/// The Python classes of the blocks of one family: each a class around a [`BlockCore`] with the
+/// family's Python signatures (the braces: the constructor and the calls, which name the class's
+/// catalog block `Self::BLOCK`), and what every block class does the same way, written here
+/// once: the implementation it drives, copies, pickle (the class called with `newargs()`, then
+/// `getstate()`), `repr`.
 macro_rules! block_classes {
     (@class $cls:ident, $block:ident, { $($methods:tt)* }) => {
         impl $cls {
@@ -239,16 +699,14 @@ macro_rules! block_classes {
             }
 
             /// For pickle: the class with the arguments that set what the state does not
-            /// hold (the data type of a timer), then the state (preset, implementation, the
-            /// core's state, the last time).
+            /// hold (the data type), then the state (implementation, preset, last time, the
+            /// core's state).
             fn __reduce__<'py>(
                 slf: &Bound<'py, Self>,
-            ) -> PyResult<(Bound<'py, PyType>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+            ) -> PyResult<(Bound<'py, PyType>, Bound<'py, PyTuple>, Bound<'py, PyTuple>)> {
                 let py = slf.py();
                 let this = slf.borrow();
-                let args = this.0.newargs().into_pyobject(py)?.into_any();
-                let state = this.0.getstate().into_pyobject(py)?.into_any();
-                Ok((slf.get_type(), args, state))
+                Ok((slf.get_type(), this.0.newargs(py)?, this.0.getstate(py)?))
             }
 
             /// Restores what `__reduce__` saved; a state no block of the kind can be in is a
@@ -263,7 +721,6 @@ macro_rules! block_classes {
         }
     };
     (
-        $inner:ident,
         $family_doc:literal,
         $methods:tt,
         $($cls:ident = $name:literal, $block:ident, $doc:literal;)*
@@ -272,178 +729,56 @@ macro_rules! block_classes {
         ///
         #[doc = $family_doc]
         #[pyclass(module = "plc_timers", name = $name)]
-        pub struct $cls($inner);
+        pub struct $cls(BlockCore);
 
         block_classes!(@class $cls, $block, $methods);
     )*};
 }
 
 // ---------------------------------------------------------------------------------------------
-// S5 timers
+// The classes: their Python signatures
 
-/// An S5 timer of either implementation, copyable behind the interface.
-trait S5Dyn: S5TimerOps + Send + Sync {
-    fn clone_box(&self) -> Box<dyn S5Dyn>;
-    /// The time of the previous execution (the ticks of the next call count from it).
-    fn last_call(&self) -> CpuTime;
+// The boolean keywords of each family's `call`, in the order of its Python signature: the
+// boolean inputs of the family's blocks ([`check_keywords`]), named as [`keyword`] names them.
+const S5_TIMER_KEYWORDS: [&str; 3] = ["s", "r", "fr"];
+const IEC_TIMER_KEYWORDS: [&str; 2] = ["in_", "r"];
+const COUNTER_KEYWORDS: [&str; 4] = ["cu", "cd", "r", "ld"];
+const S5_COUNTER_KEYWORDS: [&str; 5] = ["cu", "cd", "s", "r", "fr"];
+
+/// The keywords `names` with the values Python gave them.
+fn inputs<const N: usize>(
+    names: [&'static str; N],
+    values: [bool; N],
+) -> [(&'static str, bool); N] {
+    core::array::from_fn(|i| (names[i], values[i]))
 }
 
-impl S5Dyn for S5TimerRef {
-    fn clone_box(&self) -> Box<dyn S5Dyn> {
-        Box::new(*self)
+/// Whether the keywords `names` are the boolean inputs of the blocks of `block`'s family, as
+/// the catalog names them (the coils left out: a class gives them by method, `reset_timer`):
+/// checked when the module loads, so that a catalog change a signature does not follow is an
+/// `ImportError`.
+fn check_keywords(names: &[&str], block: Block) -> PyResult<()> {
+    let mut ports: Vec<String> = Block::ALL
+        .into_iter()
+        .filter(|b| b.family() == block.family())
+        .flat_map(|b| b.inputs().iter().copied())
+        .filter(|p| p.kind() == ValueKind::Bool)
+        .map(keyword)
+        .collect();
+    ports.sort();
+    ports.dedup();
+    let mut given: Vec<String> = names.iter().map(|n| n.to_string()).collect();
+    given.sort();
+    if given != ports {
+        return Err(pyo3::exceptions::PyImportError::new_err(format!(
+            "the keywords of {}'s family are {given:?}; its blocks' inputs are {ports:?}",
+            block
+        )));
     }
-    fn last_call(&self) -> CpuTime {
-        S5TimerRef::last_call(self)
-    }
-}
-
-impl S5Dyn for S5Timer {
-    fn clone_box(&self) -> Box<dyn S5Dyn> {
-        Box::new(*self)
-    }
-    fn last_call(&self) -> CpuTime {
-        S5Timer::last_call(self)
-    }
-}
-
-/// The state pickle saves for an S5 timer: optimized, TV (word), the last `now_ms`, the last
-/// call of the core, then the [`S5State`]'s fields (the base in ms).
-type S5TimerPickle = (
-    bool,
-    Option<u16>,
-    Option<u64>,
-    u64,
-    (bool, u16, u32, bool, bool, bool, bool),
-);
-
-/// An S5 timer of one kind, reference or optimized.
-pub struct S5Block {
-    block: Block,
-    kind: S5Kind,
-    timer: Box<dyn S5Dyn>,
-    optimized: bool,
-    tv: Option<S5Time>,
-    last: Option<CpuTime>,
-}
-
-impl Clone for S5Block {
-    fn clone(&self) -> Self {
-        S5Block {
-            timer: self.timer.clone_box(),
-            ..*self
-        }
-    }
-}
-
-impl S5Block {
-    /// The constructor's arguments for pickle: none, the state holds everything.
-    fn newargs(&self) {}
-
-    fn new(block: Block, tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<S5Block> {
-        let Kind::S5Timer(kind) = block.kind() else {
-            return Err(PyValueError::new_err(format!("{block} is not an S5 timer")));
-        };
-        let tv = tv.map(|t| args::s5time(t, "tv")).transpose()?;
-        let timer: Box<dyn S5Dyn> = if optimized {
-            Box::new(S5Timer::new())
-        } else {
-            Box::new(S5TimerRef::new())
-        };
-        Ok(S5Block {
-            block,
-            kind,
-            timer,
-            optimized,
-            tv,
-            last: None,
-        })
-    }
-
-    fn call(
-        &mut self,
-        now: &Bound<'_, PyAny>,
-        s: bool,
-        r: bool,
-        fr: bool,
-        tv: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyS5Output> {
-        let now = now_ms(now)?;
-        forward(now, self.last)?;
-        let tv = preset(self.block, tv, self.tv, args::s5time)?;
-        self.last = Some(now);
-        let input = S5Input::new(s, r, tv).with_fr(fr);
-        Ok(self.timer.call(self.kind, now, input).into())
-    }
-
-    fn getstate(&self) -> S5TimerPickle {
-        let st = self.timer.state();
-        (
-            self.optimized,
-            self.tv.map(S5Time::to_word),
-            self.last.map(CpuTime::as_millis),
-            self.timer.last_call().as_millis(),
-            (
-                st.running,
-                st.value,
-                st.base.millis(),
-                st.q,
-                st.q_on_expiry,
-                st.s_prev,
-                st.fr_prev,
-            ),
-        )
-    }
-
-    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        let (optimized, tv, last, last_call, fields): S5TimerPickle =
-            state.extract().map_err(|_| bad_state(self.block))?;
-        let (running, value, base_ms, q, q_on_expiry, s_prev, fr_prev) = fields;
-        let base = TimeBase::ALL
-            .into_iter()
-            .find(|b| b.millis() == base_ms)
-            .ok_or_else(|| bad_state(self.block))?;
-        let st = S5State {
-            running,
-            value,
-            base,
-            q,
-            q_on_expiry,
-            s_prev,
-            fr_prev,
-        };
-        let last_call = CpuTime::from_millis(last_call);
-        let timer: Box<dyn S5Dyn> = if optimized {
-            Box::new(S5Timer::from_state(st, last_call).ok_or_else(|| bad_state(self.block))?)
-        } else {
-            Box::new(S5TimerRef::from_state(st, last_call).ok_or_else(|| bad_state(self.block))?)
-        };
-        let tv = tv
-            .map(|w| S5Time::from_word(w).map_err(|_| bad_state(self.block)))
-            .transpose()?;
-        *self = S5Block {
-            timer,
-            optimized,
-            tv,
-            last: last.map(CpuTime::from_millis),
-            ..*self
-        };
-        Ok(())
-    }
-
-    fn repr(&self) -> String {
-        let tv = self
-            .tv
-            .map_or("None".to_string(), |t| format!("{:?}", t.to_string()));
-        format!(
-            "{}(tv={tv}, optimized={})",
-            self.block,
-            py_bool(self.optimized)
-        )
-    }
+    Ok(())
 }
 
 block_classes! {
-    S5Block,
     "`tv`: the time value, a literal (`\"S5T#5S\"`, `\"W#16#2050\"`), a word (int) or an \
      `S5Time`; `call()` may give another. `optimized=True` drives the optimized implementation \
      (one 32-bit word) instead of the reference.",
@@ -451,7 +786,7 @@ block_classes! {
         #[new]
         #[pyo3(signature = (tv = None, *, optimized = false))]
         fn new(tv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-            S5Block::new(Self::BLOCK, tv, optimized).map(Self)
+            BlockCore::new(Self::BLOCK, tv, None, optimized).map(Self)
         }
 
         /// One call at CPU time `now_ms` with the inputs S, R, FR and TV (this call's or
@@ -465,7 +800,9 @@ block_classes! {
             fr: bool,
             tv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyS5Output> {
-            self.0.call(now_ms, s, r, fr, tv)
+            let inputs = inputs(S5_TIMER_KEYWORDS, [s, r, fr]);
+            let out = self.0.call(Some(NowArg::first(now_ms)), &inputs, tv, true)?;
+            output(out)
         }
     },
     SPulse = "S_PULSE", SPulse, "S_PULSE (STL `SP`): a pulse of TV while S stays 1.";
@@ -482,391 +819,7 @@ block_classes! {
     SOffdt = "S_OFFDT", SOffdt, "S_OFFDT (STL `SF`): off-delay; Q falls TV after S fell.";
 }
 
-// ---------------------------------------------------------------------------------------------
-// IEC timers
-
-/// A data type of the IEC timers as Python gives it: how a preset is read from a Python object.
-trait PyDuration: IecDuration<Clock: Send + Sync> {
-    /// Reads `obj` as this data type, or the error naming what is allowed.
-    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Self>;
-}
-
-impl PyDuration for Time {
-    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Time> {
-        args::time(obj, what)
-    }
-}
-
-impl PyDuration for LTime {
-    fn extract(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<LTime> {
-        args::ltime(obj, what)
-    }
-}
-
-/// An IEC timer of either implementation and either data type (TIME, LTIME) behind one
-/// object-safe interface: times as whole units of its clock (ms for TIME, ns for LTIME), so
-/// that the Python class is written once.
-trait IecDyn: Send + Sync {
-    fn clone_box(&self) -> Box<dyn IecDyn>;
-    /// The unit of the clock and of PT and ET: `ms` or `ns`.
-    fn unit(&self) -> &'static str;
-    /// A preset read from Python, in units.
-    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64>;
-    /// A preset in units as its literal (`T#500MS`, `LT#1MS_500US`).
-    fn show(&self, pt: i64) -> String;
-    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput;
-    fn read_q(&mut self, now: u64) -> bool;
-    fn read_et(&mut self, now: u64) -> u64;
-    fn reset_timer(&mut self);
-    fn preset_timer(&mut self, pt: i64);
-    fn run_stop_run(&mut self, retentive: bool);
-    /// The state with the clock words widened to `u64`.
-    fn state(&self) -> IecState<u64>;
-    /// A timer of this implementation and data type in `state` (`None`: not a state it can be
-    /// in, or a word wider than its clock).
-    fn with_state(&self, state: IecState<u64>) -> Option<Box<dyn IecDyn>>;
-}
-
-/// The checking constructor from a state both implementations have.
-trait FromIecState<C>: Sized {
-    fn from_iec_state(state: IecState<C>) -> Option<Self>;
-}
-
-impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerRef<C, D> {
-    fn from_iec_state(state: IecState<C>) -> Option<Self> {
-        IecTimerRef::from_state(state)
-    }
-}
-
-impl<C: ClockWord, D: IecDuration> FromIecState<C> for IecTimerOf<C, D> {
-    fn from_iec_state(state: IecState<C>) -> Option<Self> {
-        IecTimerOf::from_state(state)
-    }
-}
-
-/// An IEC timer `X` on the data type `D`.
-struct TypedTimer<X, D>(X, PhantomData<fn() -> D>);
-
-impl<D: PyDuration, X> TypedTimer<X, D> {
-    /// A preset in units; `pt` was read for this data type, so it is in range.
-    fn duration(pt: i64) -> D {
-        D::from_units(i128::from(pt)).unwrap_or(D::ZERO)
-    }
-}
-
-/// A clock word from `u64`, `None` when it does not fit.
-fn word<C: ClockWord>(v: u64) -> Option<C> {
-    (v <= C::MAX.to_u64()).then(|| C::from_u64_wrapping(v))
-}
-
-impl<D: PyDuration, X> IecDyn for TypedTimer<X, D>
-where
-    X: IecTimerOps<D::Clock, D> + FromIecState<D::Clock> + Copy + Send + Sync + 'static,
-{
-    fn clone_box(&self) -> Box<dyn IecDyn> {
-        Box::new(TypedTimer::<X, D>(self.0, PhantomData))
-    }
-
-    fn unit(&self) -> &'static str {
-        <D::Unit as TimeUnit>::SYMBOL
-    }
-
-    fn preset(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<i64> {
-        D::extract(obj, what).map(D::units_signed)
-    }
-
-    fn show(&self, pt: i64) -> String {
-        Self::duration(pt).to_string()
-    }
-
-    fn call(&mut self, kind: IecKind, now: u64, input: bool, reset: bool, pt: i64) -> PyIecOutput {
-        let input = IecInput::new(input, Self::duration(pt)).with_reset(reset);
-        let o = self.0.call(kind, CpuTime::from_ticks(now), input);
-        PyIecOutput {
-            q: o.q,
-            et: o.et.to_u64(),
-        }
-    }
-
-    fn read_q(&mut self, now: u64) -> bool {
-        self.0.read_q(CpuTime::from_ticks(now))
-    }
-
-    fn read_et(&mut self, now: u64) -> u64 {
-        self.0.read_et(CpuTime::from_ticks(now)).to_u64()
-    }
-
-    fn reset_timer(&mut self) {
-        self.0.reset_timer();
-    }
-
-    fn preset_timer(&mut self, pt: i64) {
-        self.0.preset_timer(Self::duration(pt));
-    }
-
-    fn run_stop_run(&mut self, retentive: bool) {
-        self.0.run_stop_run(retentive);
-    }
-
-    fn state(&self) -> IecState<u64> {
-        let s = self.0.state();
-        IecState {
-            kind: s.kind,
-            input: s.input,
-            running: s.running,
-            start: s.start.to_u64(),
-            pt: s.pt.to_u64(),
-            et: s.et.to_u64(),
-            q: s.q,
-        }
-    }
-
-    fn with_state(&self, s: IecState<u64>) -> Option<Box<dyn IecDyn>> {
-        let state = IecState {
-            kind: s.kind,
-            input: s.input,
-            running: s.running,
-            start: word(s.start)?,
-            pt: word(s.pt)?,
-            et: word(s.et)?,
-            q: s.q,
-        };
-        let timer = X::from_iec_state(state)?;
-        Some(Box::new(TypedTimer::<X, D>(timer, PhantomData)))
-    }
-}
-
-/// A new timer of implementation `optimized` on the data type `D`.
-fn typed_timer<D: PyDuration>(optimized: bool) -> Box<dyn IecDyn> {
-    if optimized {
-        Box::new(TypedTimer::<IecTimerOf<D::Clock, D>, D>(
-            IecTimerOf::default(),
-            PhantomData,
-        ))
-    } else {
-        Box::new(TypedTimer::<IecTimerRef<D::Clock, D>, D>(
-            IecTimerRef::default(),
-            PhantomData,
-        ))
-    }
-}
-
-/// A new timer of `instruction` (an IEC timer on TIME or LTIME).
-fn iec_timer(instruction: Instruction, optimized: bool) -> Box<dyn IecDyn> {
-    match instruction.data_type() {
-        DataType::LTime => typed_timer::<LTime>(optimized),
-        _ => typed_timer::<Time>(optimized),
-    }
-}
-
-/// The instruction `block` on the data type named `type_name` (ASCII case ignored), or a
-/// `ValueError` naming the data types the block takes.
-fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
-    let takes = || {
-        let names: Vec<&str> = block.data_types().iter().map(|t| t.name()).collect();
-        names.join(" ")
-    };
-    let data_type = DataType::lookup(type_name.trim()).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "unknown data type `{type_name}`; {block} takes {}",
-            takes()
-        ))
-    })?;
-    Instruction::new(block, data_type).map_err(|e| PyValueError::new_err(e.to_string()))
-}
-
-/// The state pickle saves for an IEC timer: optimized, PT (in units of the clock), the last
-/// `now`, then the [`IecState`]'s fields (the kind by name). The data type is an argument of
-/// the class (`__reduce__`).
-type IecTimerPickle = (
-    bool,
-    Option<i64>,
-    Option<u64>,
-    (Option<String>, bool, bool, u64, u64, u64, bool),
-);
-
-/// The CPU time of an IEC timer's call as Python gave it: first (`given`), or by the keyword
-/// of its unit (`now_ms=`, `now_ns=`); exactly one, that of the block's clock.
-struct NowArg<'a, 'py> {
-    given: Option<&'a Bound<'py, PyAny>>,
-    ms: Option<&'a Bound<'py, PyAny>>,
-    ns: Option<&'a Bound<'py, PyAny>>,
-}
-
-/// An IEC timer of one kind and data type, reference or optimized.
-pub struct IecBlock {
-    block: Block,
-    kind: IecKind,
-    instruction: Instruction,
-    timer: Box<dyn IecDyn>,
-    optimized: bool,
-    pt: Option<i64>,
-    last: Option<u64>,
-}
-
-impl Clone for IecBlock {
-    fn clone(&self) -> Self {
-        IecBlock {
-            timer: self.timer.clone_box(),
-            ..*self
-        }
-    }
-}
-
-impl IecBlock {
-    fn new(
-        block: Block,
-        pt: Option<&Bound<'_, PyAny>>,
-        type_name: &str,
-        optimized: bool,
-    ) -> PyResult<IecBlock> {
-        let Kind::IecTimer(kind) = block.kind() else {
-            return Err(PyValueError::new_err(format!(
-                "{block} is not an IEC timer"
-            )));
-        };
-        let instruction = instruction(block, type_name)?;
-        let timer = iec_timer(instruction, optimized);
-        let pt = pt.map(|t| timer.preset(t, "pt")).transpose()?;
-        Ok(IecBlock {
-            block,
-            kind,
-            instruction,
-            timer,
-            optimized,
-            pt,
-            last: None,
-        })
-    }
-
-    /// The CPU time of a call, given positionally (in the block's unit) or by the keyword of
-    /// the block's unit (`now_ms`, `now_ns`), not before the previous call's.
-    fn at(&mut self, now: NowArg<'_, '_>) -> PyResult<u64> {
-        let unit = self.timer.unit();
-        let keyword = format!("now_{unit}");
-        let given = match (now.given, now.ms, now.ns) {
-            (Some(t), None, None) => t,
-            (None, Some(t), None) if unit == "ms" => t,
-            (None, None, Some(t)) if unit == "ns" => t,
-            (None, None, None) => {
-                return Err(PyTypeError::new_err(format!(
-                    "{} needs the CPU time: give it first or as {keyword}= (whole {unit})",
-                    self.instruction
-                )))
-            }
-            _ => {
-                return Err(PyTypeError::new_err(format!(
-                    "{} runs on a clock in {unit}: give the CPU time once, first or as \
-                     {keyword}=",
-                    self.instruction
-                )))
-            }
-        };
-        let now = args::clock(given, unit)?;
-        args::forward_in(now, self.last, unit)?;
-        self.last = Some(now);
-        Ok(now)
-    }
-
-    fn call(
-        &mut self,
-        now: NowArg<'_, '_>,
-        input: bool,
-        r: bool,
-        pt: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyIecOutput> {
-        has_input(self.block, Port::R, r)?;
-        let timer = &self.timer;
-        let pt = preset(self.block, pt, self.pt, |o, what| timer.preset(o, what))?;
-        let now = self.at(now)?;
-        Ok(self.timer.call(self.kind, now, input, r, pt))
-    }
-
-    fn getstate(&self) -> IecTimerPickle {
-        let st = self.timer.state();
-        (
-            self.optimized,
-            self.pt,
-            self.last,
-            (
-                st.kind.map(|k| k.name().to_string()),
-                st.input,
-                st.running,
-                st.start,
-                st.pt,
-                st.et,
-                st.q,
-            ),
-        )
-    }
-
-    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        let bad = || bad_state(self.block);
-        let (optimized, pt, last, fields): IecTimerPickle = state.extract().map_err(|_| bad())?;
-        let (kind, input, running, start, st_pt, et, q) = fields;
-        let kind = match kind {
-            None => None,
-            Some(name) => Some(
-                IecKind::ALL
-                    .into_iter()
-                    .find(|k| k.name() == name)
-                    .ok_or_else(bad)?,
-            ),
-        };
-        let st = IecState {
-            kind,
-            input,
-            running,
-            start,
-            pt: st_pt,
-            et,
-            q,
-        };
-        let timer = iec_timer(self.instruction, optimized)
-            .with_state(st)
-            .ok_or_else(bad)?;
-        // The preset must be one of the data type: read it back as the class would.
-        if let Some(v) = pt {
-            let back = timer.preset(&v.into_pyobject(state.py())?.into_any(), "pt");
-            if back.is_err() {
-                return Err(bad());
-            }
-        }
-        *self = IecBlock {
-            timer,
-            optimized,
-            pt,
-            last,
-            ..*self
-        };
-        Ok(())
-    }
-
-    /// The constructor's arguments for pickle: the preset is in the state, the data type here.
-    fn newargs(&self) -> (Option<i64>, &'static str) {
-        (None, self.instruction.data_type().name())
-    }
-
-    fn repr(&self) -> String {
-        let pt = self
-            .pt
-            .map_or("None".to_string(), |t| format!("{:?}", self.timer.show(t)));
-        let data_type = self.instruction.data_type();
-        let ty = if data_type == self.block.default_data_type() {
-            String::new()
-        } else {
-            format!(", type={:?}", data_type.name())
-        };
-        format!(
-            "{}(pt={pt}{ty}, optimized={})",
-            self.block,
-            py_bool(self.optimized)
-        )
-    }
-}
-
 block_classes! {
-    IecBlock,
     "`type`: the data type of PT and ET, `\"TIME\"` (default; the clock, PT and ET in \
      milliseconds, the 16-byte IEC_TIMER) or `\"LTIME\"` (S7-1500; in nanoseconds, the 32-byte \
      IEC_LTIMER). `pt`: the preset, a literal (`\"T#500ms\"`, or `\"LT#1ms500us\"` for LTIME), \
@@ -876,7 +829,7 @@ block_classes! {
         #[new]
         #[pyo3(signature = (pt = None, r#type = "TIME", *, optimized = false))]
         fn new(pt: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
-            IecBlock::new(Self::BLOCK, pt, r#type, optimized).map(Self)
+            BlockCore::new(Self::BLOCK, pt, Some(r#type), optimized).map(Self)
         }
 
         /// One call of the box at CPU time `now` (whole ms for TIME, whole ns for LTIME;
@@ -893,7 +846,10 @@ block_classes! {
             now_ms: Option<&Bound<'_, PyAny>>,
             now_ns: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyIecOutput> {
-            self.0.call(NowArg { given: now, ms: now_ms, ns: now_ns }, in_, r, pt)
+            let now = NowArg { given: now, ms: now_ms, ns: now_ns };
+            let inputs = inputs(IEC_TIMER_KEYWORDS, [in_, r]);
+            let out = self.0.call(Some(now), &inputs, pt, true)?;
+            output(out)
         }
 
         /// Reads the structure's Q at `now` (the clock's unit): an update happens first
@@ -905,8 +861,8 @@ block_classes! {
             now_ms: Option<&Bound<'_, PyAny>>,
             now_ns: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<bool> {
-            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
-            Ok(self.0.timer.read_q(now))
+            let now = NowArg { given: now, ms: now_ms, ns: now_ns };
+            read_as(self.0.read(now, Port::Q)?)
         }
 
         /// Reads the structure's ET at `now` (the clock's unit): an update happens first
@@ -918,27 +874,25 @@ block_classes! {
             now_ms: Option<&Bound<'_, PyAny>>,
             now_ns: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<u64> {
-            let now = self.0.at(NowArg { given: now, ms: now_ms, ns: now_ns })?;
-            Ok(self.0.timer.read_et(now))
+            let now = NowArg { given: now, ms: now_ms, ns: now_ns };
+            read_as(self.0.read(now, Port::Et)?)
         }
 
         /// The `-(RT)-` coil with power flow: resets the timer data (IEC-RT-01).
-        fn reset_timer(&mut self) {
-            self.0.timer.reset_timer();
+        fn reset_timer(&mut self) -> PyResult<()> {
+            self.0.write(Access::Reset)
         }
 
         /// The `-(PT)-` coil with power flow: loads `pt` (of the block's data type) into
         /// the structure's preset.
         fn preset_timer(&mut self, pt: &Bound<'_, PyAny>) -> PyResult<()> {
-            let pt = self.0.timer.preset(pt, "pt")?;
-            self.0.timer.preset_timer(pt);
-            Ok(())
+            self.0.write(Access::Preset(pt))
         }
 
         /// A RUN-STOP-RUN transition: a non-retentive structure returns to its initial
         /// values; a retentive one keeps its data.
-        fn run_stop_run(&mut self, retentive: bool) {
-            self.0.timer.run_stop_run(retentive);
+        fn run_stop_run(&mut self, retentive: bool) -> PyResult<()> {
+            self.0.write(Access::RunStopRun(retentive))
         }
 
         /// The data type's name (`TIME`, `LTIME`).
@@ -966,247 +920,7 @@ block_classes! {
     Tonr = "TONR", Tonr, "TONR: retentive on-delay; ET accumulates while IN is 1, R clears it.";
 }
 
-// ---------------------------------------------------------------------------------------------
-// IEC counters
-
-/// An IEC counter of any integer type, behind one object-safe interface: PV and CV as `i128`
-/// (every type's values fit).
-trait AnyCounter: Send + Sync {
-    fn clone_box(&self) -> Box<dyn AnyCounter>;
-    /// CV, CU's and CD's edge memories.
-    fn state(&self) -> (i128, bool, bool);
-    /// This counter put in a state (`None`: CV outside the type).
-    fn with_state(&self, cv: i128, cu_prev: bool, cd_prev: bool) -> Option<Box<dyn AnyCounter>>;
-    fn call(
-        &mut self,
-        kind: CounterKind,
-        cu: bool,
-        cd: bool,
-        r: bool,
-        ld: bool,
-        pv: i128,
-    ) -> Option<PyCounterOutput>;
-}
-
-/// A counter `X` of integer type `T`.
-struct Typed<X, T>(X, PhantomData<T>);
-
-/// The two implementations' constructor from a state (every counter state is valid).
-trait FromCounterState<T>: Sized {
-    fn from_counter_state(state: CounterState<T>) -> Self;
-}
-
-impl<T: CounterInt> FromCounterState<T> for Counter<T> {
-    fn from_counter_state(state: CounterState<T>) -> Self {
-        Counter::from_state(state)
-    }
-}
-
-impl<T: CounterInt> FromCounterState<T> for CounterRef<T> {
-    fn from_counter_state(state: CounterState<T>) -> Self {
-        CounterRef::from_state(state)
-    }
-}
-
-impl<T: CounterInt, X> AnyCounter for Typed<X, T>
-where
-    X: CounterOps<T> + FromCounterState<T> + Copy + Send + Sync + 'static,
-{
-    fn clone_box(&self) -> Box<dyn AnyCounter> {
-        Box::new(Typed(self.0, PhantomData))
-    }
-
-    fn state(&self) -> (i128, bool, bool) {
-        let s = self.0.state();
-        (s.cv.to_i128(), s.cu_prev, s.cd_prev)
-    }
-
-    fn with_state(&self, cv: i128, cu_prev: bool, cd_prev: bool) -> Option<Box<dyn AnyCounter>> {
-        let state = CounterState {
-            cv: T::from_i128(cv)?,
-            cu_prev,
-            cd_prev,
-        };
-        Some(Box::new(Typed(X::from_counter_state(state), PhantomData)))
-    }
-
-    fn call(
-        &mut self,
-        kind: CounterKind,
-        cu: bool,
-        cd: bool,
-        r: bool,
-        ld: bool,
-        pv: i128,
-    ) -> Option<PyCounterOutput> {
-        let pv = T::from_i128(pv)?;
-        let o: CounterOutput<T> = self.0.call(kind, CounterInput { cu, cd, r, ld, pv });
-        Some(PyCounterOutput {
-            qu: o.qu,
-            qd: o.qd,
-            cv: o.cv.to_i128(),
-        })
-    }
-}
-
-fn typed<T: CounterInt>(optimized: bool) -> Box<dyn AnyCounter> {
-    if optimized {
-        Box::new(Typed(Counter::<T>::new(), PhantomData))
-    } else {
-        Box::new(Typed(CounterRef::<T>::new(), PhantomData))
-    }
-}
-
-/// A new counter of type `t`.
-fn any_counter(t: IntType, optimized: bool) -> Box<dyn AnyCounter> {
-    match t {
-        IntType::SInt => typed::<i8>(optimized),
-        IntType::Int => typed::<i16>(optimized),
-        IntType::DInt => typed::<i32>(optimized),
-        IntType::LInt => typed::<i64>(optimized),
-        IntType::USInt => typed::<u8>(optimized),
-        IntType::UInt => typed::<u16>(optimized),
-        IntType::UDInt => typed::<u32>(optimized),
-        IntType::ULInt => typed::<u64>(optimized),
-    }
-}
-
-/// The integer type named `name` (SINT … ULINT, ASCII case ignored).
-pub fn int_type(name: &str) -> PyResult<IntType> {
-    IntType::lookup(name.trim()).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "unknown integer type `{name}`; type is one of {}",
-            IntType::names()
-        ))
-    })
-}
-
-/// A preset of type `t`, as an `i128` inside its range.
-pub fn counter_pv(obj: &Bound<'_, PyAny>, t: IntType, what: &str) -> PyResult<i128> {
-    let (lo, hi) = t.limits();
-    let v: i128 = args::int_in(obj, what, &format!("an int of {}, {lo}..={hi}", t.name()))?;
-    if v < lo || v > hi {
-        return Err(PyValueError::new_err(format!(
-            "{what} is an int of {}, {lo}..={hi}; got {v}",
-            t.name()
-        )));
-    }
-    Ok(v)
-}
-
-/// The state pickle saves for an IEC counter: optimized, the integer type, PV, then CV and
-/// the edge memories of CU and CD.
-type CounterPickle = (bool, String, Option<i128>, (i128, bool, bool));
-
-/// An IEC counter of one kind and integer type, reference or optimized.
-pub struct CounterBlock {
-    block: Block,
-    kind: CounterKind,
-    int_type: IntType,
-    counter: Box<dyn AnyCounter>,
-    optimized: bool,
-    pv: Option<i128>,
-}
-
-impl Clone for CounterBlock {
-    fn clone(&self) -> Self {
-        CounterBlock {
-            counter: self.counter.clone_box(),
-            ..*self
-        }
-    }
-}
-
-impl CounterBlock {
-    /// The constructor's arguments for pickle: none, the state holds everything.
-    fn newargs(&self) {}
-
-    fn getstate(&self) -> CounterPickle {
-        (
-            self.optimized,
-            self.int_type.name().to_string(),
-            self.pv,
-            self.counter.state(),
-        )
-    }
-
-    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        let bad = || bad_state(self.block);
-        let (optimized, type_name, pv, (cv, cu_prev, cd_prev)): CounterPickle =
-            state.extract().map_err(|_| bad())?;
-        let t = IntType::lookup(&type_name).ok_or_else(bad)?;
-        let (lo, hi) = t.limits();
-        if pv.is_some_and(|v| v < lo || v > hi) {
-            return Err(bad());
-        }
-        let counter = any_counter(t, optimized)
-            .with_state(cv, cu_prev, cd_prev)
-            .ok_or_else(bad)?;
-        *self = CounterBlock {
-            int_type: t,
-            counter,
-            optimized,
-            pv,
-            ..*self
-        };
-        Ok(())
-    }
-
-    fn new(
-        block: Block,
-        pv: Option<&Bound<'_, PyAny>>,
-        type_name: &str,
-        optimized: bool,
-    ) -> PyResult<CounterBlock> {
-        let Kind::IecCounter(kind) = block.kind() else {
-            return Err(PyValueError::new_err(format!(
-                "{block} is not an IEC counter"
-            )));
-        };
-        let t = int_type(type_name)?;
-        let pv = pv.map(|p| counter_pv(p, t, "pv")).transpose()?;
-        Ok(CounterBlock {
-            block,
-            kind,
-            int_type: t,
-            counter: any_counter(t, optimized),
-            optimized,
-            pv,
-        })
-    }
-
-    fn call(
-        &mut self,
-        cu: bool,
-        cd: bool,
-        r: bool,
-        ld: bool,
-        pv: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyCounterOutput> {
-        for (port, v) in [(Port::Cu, cu), (Port::Cd, cd), (Port::R, r), (Port::Ld, ld)] {
-            has_input(self.block, port, v)?;
-        }
-        let t = self.int_type;
-        let pv = preset(self.block, pv, self.pv, |o, what| counter_pv(o, t, what))?;
-        // `pv` was checked against the type's range, so the conversion inside cannot fail.
-        self.counter
-            .call(self.kind, cu, cd, r, ld, pv)
-            .ok_or_else(|| PyValueError::new_err(format!("pv {pv} is outside {}", t.name())))
-    }
-
-    fn repr(&self) -> String {
-        let pv = self.pv.map_or("None".to_string(), |v| v.to_string());
-        format!(
-            "{}(pv={pv}, type={:?}, optimized={})",
-            self.block,
-            self.int_type.name(),
-            py_bool(self.optimized)
-        )
-    }
-}
-
 block_classes! {
-    CounterBlock,
     "`pv`: the preset (an int of the type); `call()` may give another. `type`: the integer type \
      of PV and CV, one of SINT INT DINT LINT USINT UINT UDINT ULINT (default INT). \
      `optimized=True` drives the optimized implementation.",
@@ -1214,7 +928,7 @@ block_classes! {
         #[new]
         #[pyo3(signature = (pv = None, r#type = "INT", *, optimized = false))]
         fn new(pv: Option<&Bound<'_, PyAny>>, r#type: &str, optimized: bool) -> PyResult<Self> {
-            CounterBlock::new(Self::BLOCK, pv, r#type, optimized).map(Self)
+            BlockCore::new(Self::BLOCK, pv, Some(r#type), optimized).map(Self)
         }
 
         /// One call with the inputs the block has (CU, CD, R, LD; an input it lacks must
@@ -1228,13 +942,14 @@ block_classes! {
             ld: bool,
             pv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyCounterOutput> {
-            self.0.call(cu, cd, r, ld, pv)
+            let inputs = inputs(COUNTER_KEYWORDS, [cu, cd, r, ld]);
+            output(self.0.call(None, &inputs, pv, true)?)
         }
 
         /// The integer type's name.
         #[getter]
         fn r#type(&self) -> &'static str {
-            self.0.int_type.name()
+            self.0.instruction.data_type().name()
         }
     },
     Ctu = "CTU", Ctu,
@@ -1249,151 +964,7 @@ block_classes! {
     Ctud = "CTUD", Ctud, "CTUD: counts up (CU) and down (CD); R clears, LD loads PV.";
 }
 
-// ---------------------------------------------------------------------------------------------
-// S5 counters
-
-/// An S5 counter of either implementation, copyable behind the interface.
-trait S5CounterDyn: S5CounterOps + Send + Sync {
-    fn clone_box(&self) -> Box<dyn S5CounterDyn>;
-}
-
-impl<X: S5CounterOps + Copy + Send + Sync + 'static> S5CounterDyn for X {
-    fn clone_box(&self) -> Box<dyn S5CounterDyn> {
-        Box::new(*self)
-    }
-}
-
-/// The state pickle saves for an S5 counter: optimized, PV, then the [`S5CounterState`]'s
-/// fields.
-type S5CounterPickle = (bool, Option<u16>, (u16, bool, bool, bool, bool));
-
-/// An S5 counter of one kind, reference or optimized.
-pub struct S5CounterBlock {
-    block: Block,
-    kind: S5CounterKind,
-    counter: Box<dyn S5CounterDyn>,
-    optimized: bool,
-    pv: Option<CounterPreset>,
-}
-
-impl Clone for S5CounterBlock {
-    fn clone(&self) -> Self {
-        S5CounterBlock {
-            counter: self.counter.clone_box(),
-            ..*self
-        }
-    }
-}
-
-impl S5CounterBlock {
-    /// The constructor's arguments for pickle: none, the state holds everything.
-    fn newargs(&self) {}
-
-    fn getstate(&self) -> S5CounterPickle {
-        let st = self.counter.state();
-        (
-            self.optimized,
-            self.pv.map(CounterPreset::value),
-            (st.cv, st.cu_prev, st.cd_prev, st.s_prev, st.fr_prev),
-        )
-    }
-
-    fn setstate(&mut self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        let bad = || bad_state(self.block);
-        let (optimized, pv, (cv, cu_prev, cd_prev, s_prev, fr_prev)): S5CounterPickle =
-            state.extract().map_err(|_| bad())?;
-        let st = S5CounterState {
-            cv,
-            cu_prev,
-            cd_prev,
-            s_prev,
-            fr_prev,
-        };
-        let counter: Box<dyn S5CounterDyn> = if optimized {
-            Box::new(S5Counter::from_state(st).ok_or_else(bad)?)
-        } else {
-            Box::new(S5CounterRef::from_state(st).ok_or_else(bad)?)
-        };
-        let pv = pv
-            .map(|v| CounterPreset::new(v).map_err(|_| bad()))
-            .transpose()?;
-        *self = S5CounterBlock {
-            counter,
-            optimized,
-            pv,
-            ..*self
-        };
-        Ok(())
-    }
-
-    fn new(
-        block: Block,
-        pv: Option<&Bound<'_, PyAny>>,
-        optimized: bool,
-    ) -> PyResult<S5CounterBlock> {
-        let Kind::S5Counter(kind) = block.kind() else {
-            return Err(PyValueError::new_err(format!(
-                "{block} is not an S5 counter"
-            )));
-        };
-        let pv = pv.map(|p| args::counter_preset(p, "pv")).transpose()?;
-        let counter: Box<dyn S5CounterDyn> = if optimized {
-            Box::new(S5Counter::new())
-        } else {
-            Box::new(S5CounterRef::new())
-        };
-        Ok(S5CounterBlock {
-            block,
-            kind,
-            counter,
-            optimized,
-            pv,
-        })
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn call(
-        &mut self,
-        cu: bool,
-        cd: bool,
-        s: bool,
-        r: bool,
-        fr: bool,
-        pv: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<PyS5CounterOutput> {
-        for (port, v) in [(Port::Cu, cu), (Port::Cd, cd)] {
-            has_input(self.block, port, v)?;
-        }
-        // PV matters only when S sets the counter; a call without it needs none.
-        let pv = match (pv, self.pv) {
-            (None, None) if !s => CounterPreset::default(),
-            _ => preset(self.block, pv, self.pv, args::counter_preset)?,
-        };
-        let input = S5CounterInput {
-            cu,
-            cd,
-            s,
-            r,
-            fr,
-            pv,
-        };
-        Ok(self.counter.call(self.kind, input).into())
-    }
-
-    fn repr(&self) -> String {
-        let pv = self
-            .pv
-            .map_or("None".to_string(), |p| format!("\"C#{}\"", p.value()));
-        format!(
-            "{}(pv={pv}, optimized={})",
-            self.block,
-            py_bool(self.optimized)
-        )
-    }
-}
-
 block_classes! {
-    S5CounterBlock,
     "`pv`: the preset that S loads, a literal (`\"C#5\"`), an int 0..=999 or a `CounterPreset`; \
      `call()` may give another. `optimized=True` drives the optimized implementation (one \
      16-bit word).",
@@ -1401,7 +972,7 @@ block_classes! {
         #[new]
         #[pyo3(signature = (pv = None, *, optimized = false))]
         fn new(pv: Option<&Bound<'_, PyAny>>, optimized: bool) -> PyResult<Self> {
-            S5CounterBlock::new(Self::BLOCK, pv, optimized).map(Self)
+            BlockCore::new(Self::BLOCK, pv, None, optimized).map(Self)
         }
 
         /// One call with CU, CD (those the block has), S, R, FR and PV (this call's or the
@@ -1417,7 +988,9 @@ block_classes! {
             fr: bool,
             pv: Option<&Bound<'_, PyAny>>,
         ) -> PyResult<PyS5CounterOutput> {
-            self.0.call(cu, cd, s, r, fr, pv)
+            let inputs = inputs(S5_COUNTER_KEYWORDS, [cu, cd, s, r, fr]);
+            // PV matters only when S sets the counter.
+            output(self.0.call(None, &inputs, pv, s)?)
         }
     },
     SCu = "S_CU", SCu, "S_CU (STL `CU`, `S`, `R`): an up counter 0..=999.";
@@ -1432,8 +1005,60 @@ block_classes! {
     SCud = "S_CUD", SCud, "S_CUD: an up-down counter 0..=999.";
 }
 
+/// An output class from the outputs of the family's widest box.
+fn output<O: OutputClass>(out: Outputs) -> PyResult<O> {
+    O::from_outputs(out.as_slice()).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "the outputs {:?} do not fit the fields {:?}",
+            out.as_slice(),
+            O::FIELDS
+        ))
+    })
+}
+
+/// A member read as the Python type of its method.
+fn read_as<T: FromValue>(v: Value) -> PyResult<T> {
+    T::from_value(v).ok_or_else(|| PyValueError::new_err(format!("unexpected member {v}")))
+}
+
+/// An output class: its fields are the outputs of the family's widest box ([`widest`]), named
+/// as the catalog's ports lower-cased.
+trait OutputClass: Sized {
+    /// The fields in order.
+    const FIELDS: &'static [&'static str];
+    /// The outputs `values` of the family's widest box, one per field in the catalog's order;
+    /// `None` when they are not.
+    fn from_outputs(values: &[Value]) -> Option<Self>;
+}
+
+/// Whether the fields of `O` are the outputs of the widest box of `block`'s family, as the
+/// catalog names them: checked when the module loads, so that a catalog change a class does
+/// not follow is an `ImportError`, not a wrong field.
+fn check_fields<O: OutputClass>(block: Block) -> PyResult<()> {
+    let ports: Vec<String> = widest(block)
+        .outputs()
+        .iter()
+        .map(|&p| keyword(p))
+        .collect();
+    if ports != O::FIELDS {
+        return Err(pyo3::exceptions::PyImportError::new_err(format!(
+            "the output class of {block} has the fields {:?}; its family's outputs are {ports:?}",
+            O::FIELDS
+        )));
+    }
+    Ok(())
+}
+
 /// Adds the classes to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    check_fields::<PyS5Output>(Block::SOdt)?;
+    check_fields::<PyIecOutput>(Block::Ton)?;
+    check_fields::<PyCounterOutput>(Block::Ctu)?;
+    check_fields::<PyS5CounterOutput>(Block::SCu)?;
+    check_keywords(&S5_TIMER_KEYWORDS, Block::SOdt)?;
+    check_keywords(&IEC_TIMER_KEYWORDS, Block::Ton)?;
+    check_keywords(&COUNTER_KEYWORDS, Block::Ctu)?;
+    check_keywords(&S5_COUNTER_KEYWORDS, Block::SCu)?;
     m.add_class::<PyS5Output>()?;
     m.add_class::<PyIecOutput>()?;
     m.add_class::<PyCounterOutput>()?;

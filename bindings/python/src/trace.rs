@@ -6,7 +6,7 @@
 
 use std::io::Cursor;
 
-use plc_timers::catalog::{Block, Kind, PresetKind, ValueKind};
+use plc_timers::catalog::{Block, DataType, Kind, PresetKind, ValueKind};
 use plc_timers::rule::RuleSet;
 use plc_timers_trace::{
     self as engine, parse_value, preset_option, show, BlockSpec, Error, Implementation, Location,
@@ -17,7 +17,6 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList, PyString};
 
 use crate::args::{self, shown, type_name};
-use crate::blocks::counter_pv;
 use crate::literals::{PyCounterPreset, PyS5Time, PyTime};
 
 /// A `plc_timers.TraceError` with its attributes.
@@ -142,7 +141,11 @@ fn typed_preset(spec: BlockSpec, obj: &Bound<'_, PyAny>, name: &str) -> PyResult
     match spec.block.preset().kind {
         PresetKind::S5Time => args::s5time(obj, name).map(PresetValue::S5Time),
         PresetKind::Time => args::time(obj, name).map(PresetValue::Time),
-        PresetKind::Integer => counter_pv(obj, spec.int_type, name).map(PresetValue::Integer),
+        PresetKind::Integer => {
+            // The trace's integer types are the catalog's, by name.
+            let t = DataType::lookup(spec.int_type.name()).unwrap_or(DataType::Int);
+            args::int_preset(obj, t, name).map(PresetValue::Integer)
+        }
         PresetKind::S5Count => args::counter_preset(obj, name).map(PresetValue::S5Count),
     }
 }

@@ -172,7 +172,7 @@ def test_bad_arguments_say_what_is_allowed() -> None:
         t.call(5)
     with pytest.raises(ValueError, match="TON needs its pt"):
         plc_timers.TON().call(0)
-    with pytest.raises(ValueError, match="unknown integer type `WORD`"):
+    with pytest.raises(ValueError, match="CTU does not take the data type WORD; it takes SINT INT"):
         plc_timers.CTU(pv=1, type="WORD")
 
 

@@ -346,7 +346,7 @@ def test_a_pickled_state_no_block_can_be_in_is_refused() -> None:
     with pytest.raises(ValueError, match="not a state of TON"):
         ton.__setstate__(bad)  # ET 10 > PT 5
     with pytest.raises(ValueError, match="not a state of S_CU"):
-        plc_timers.S_CU().__setstate__((False, None, (1000, False, False, False, False)))
+        plc_timers.S_CU().__setstate__((False, None, None, (1000, False, False, False, False)))
 
 
 def test_memory_areas_copy_and_pickle() -> None:

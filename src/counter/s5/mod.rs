@@ -306,12 +306,37 @@ impl crate::block::Family for S5Counters {
     fn ramp(_: &S5CounterOutput) -> Option<u64> {
         None
     }
+
+    fn state_fields(s: &S5CounterState) -> crate::block::Fields {
+        use crate::block::{Fields, Value};
+        Fields::of([
+            Value::Int(i128::from(s.cv)),
+            Value::Bool(s.cu_prev),
+            Value::Bool(s.cd_prev),
+            Value::Bool(s.s_prev),
+            Value::Bool(s.fr_prev),
+        ])
+    }
+
+    fn state_from_fields(fields: &[crate::block::Value]) -> Option<S5CounterState> {
+        let [cv, cu_prev, cd_prev, s_prev, fr_prev] = *fields else {
+            return None;
+        };
+        Some(S5CounterState {
+            cv: u16::try_from(cv.as_int()?).ok()?,
+            cu_prev: cu_prev.as_bool()?,
+            cd_prev: cd_prev.as_bool()?,
+            s_prev: s_prev.as_bool()?,
+            fr_prev: fr_prev.as_bool()?,
+        })
+    }
 }
 
 crate::block::block_ops! {
     impl[] S5CounterRef: S5Counters,
     call: |c, kind, _now, input| S5CounterOps::call(c, kind, input),
     state: S5CounterOps::state,
+    from_state: |state, _last_call| S5CounterRef::from_state(state),
     explains: |c, kind, _now, input| c.call_explained(kind, input),
 }
 
@@ -319,4 +344,5 @@ crate::block::block_ops! {
     impl[] S5Counter: S5Counters,
     call: |c, kind, _now, input| S5CounterOps::call(c, kind, input),
     state: S5CounterOps::state,
+    from_state: |state, _last_call| S5Counter::from_state(state),
 }
