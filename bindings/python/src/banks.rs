@@ -6,11 +6,11 @@
 use std::sync::{Mutex, MutexGuard, PoisonError};
 use std::time::Instant;
 
+use crate::int_type::IntType;
 use numpy::{Element, PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
 use plc_timers::counter::{BankInputs, CounterBank, CounterInt, CounterState};
 use plc_timers::iec::{IecState, TonBank};
 use plc_timers::time::{CpuTime, Time};
-use plc_timers_trace::IntType;
 use pyo3::exceptions::{PyImportError, PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple, PyType};

@@ -4,6 +4,7 @@
 
 use std::marker::PhantomData;
 
+use crate::int_type::IntType;
 use plc_timers::catalog::{Block, Kind, Port};
 use plc_timers::counter::s5::{
     CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterOutput,
@@ -16,7 +17,7 @@ use plc_timers::counter::{
 use plc_timers::iec::{IecInput, IecKind, IecOutput, IecState, IecTimer, IecTimerOps, IecTimerRef};
 use plc_timers::s5::{S5Input, S5Kind, S5Output, S5State, S5Timer, S5TimerOps, S5TimerRef};
 use plc_timers::time::{CpuTime, S5Time, Time, TimeBase};
-use plc_timers_trace::{preset_option, IntType};
+use plc_timers_trace::preset_option;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyType;

@@ -19,6 +19,7 @@ use pyo3::types::{PyBool, PyInt, PyString, PyTuple};
 pub mod args;
 pub mod banks;
 pub mod blocks;
+pub mod int_type;
 pub mod literals;
 pub mod memory;
 pub mod trace;
