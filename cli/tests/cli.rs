@@ -63,8 +63,8 @@ fn ltime_runs_in_nanoseconds() {
         ],
     ] {
         let o = plc(args, trace);
-        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-        assert_eq!(stdout(&o), expected, "{args:?}");
+        assert!(o.status.success(), "CLI-LTIME-01: {args:?}: {}", stderr(&o));
+        assert_eq!(stdout(&o), expected, "CLI-LTIME-01: {args:?}");
     }
     // LT#30D = 2 592 000 000 000 000 ns: not expired after 2^40 ns.
     let o = plc(
@@ -73,20 +73,21 @@ fn ltime_runs_in_nanoseconds() {
     );
     assert_eq!(
         stdout(&o),
-        "t_ns,IN,Q,ET\n0,1,0,0\n1099511627776,1,0,1099511627776\n2592000000000000,1,1,2592000000000000\n"
+        "t_ns,IN,Q,ET\n0,1,0,0\n1099511627776,1,0,1099511627776\n2592000000000000,1,1,2592000000000000\n",
+        "CLI-LTIME-01: LT#30D"
     );
     // check agrees with run's own output, and finds a changed ET.
     let o = plc(
         &["check", "TON", "--type", "LTIME", "--pt", "LT#1MS500US"],
         expected,
     );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(0), "CLI-LTIME-01: {}", stderr(&o));
     let changed = expected.replace(",1,0,1000000", ",1,0,1000001");
     let o = plc(&["check", "TON_LTIME", "--pt", "LT#1MS500US"], &changed);
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(1), "CLI-LTIME-01: {}", stderr(&o));
     assert!(
         stdout(&o).contains("DIFFERENT at line 3, column 4 (ET): the reference gives 1000000"),
-        "{}",
+        "CLI-LTIME-01: {}",
         stdout(&o)
     );
 }
@@ -148,12 +149,12 @@ fn bad_input_names_line_and_column_exit_2() {
         (
             &["run", "TON", "--type", "LTIME", "--pt", "LT#1MS"],
             "t_ms,IN\n0,1\n",
-            "line 1, column 1 (t_ms): `t_ms` is a time in milliseconds; TON on LTIME counts its time in nanoseconds (`t_ns`), so its columns are t_ns, IN, PT",
+            "line 1, column 1 (t_ms): `t_ms` is a time in milliseconds; TON on LTIME counts its time in nanoseconds (`t_ns`), so its columns are t_ns, IN, PT, RT",
         ),
         (
             &["run", "TON", "--pt", "5"],
             "IN,t_ns\n1,0\n",
-            "line 1, column 2 (t_ns): `t_ns` is a time in nanoseconds; TON on TIME counts its time in milliseconds (`t_ms`), so its columns are t_ms, IN, PT",
+            "line 1, column 2 (t_ns): `t_ns` is a time in nanoseconds; TON on TIME counts its time in milliseconds (`t_ms`), so its columns are t_ms, IN, PT, RT",
         ),
         (
             &["run", "TON_LTIME", "--pt", "5"],

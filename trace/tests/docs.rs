@@ -136,8 +136,14 @@ fn ltime_diagram_in_nanoseconds() {
         .expect("TON takes LTIME");
     let e = examples::of_instruction(ton.instruction).expect("the TON LTIME example");
     let (svg, _) = example_svg(&e);
-    assert!(svg.contains(">t [ns]</text>"), "the axis' unit");
-    assert!(svg.contains(">TON, PT = LT#1MS_500US</text>"), "the title");
+    assert!(
+        svg.contains(">t [ns]</text>"),
+        "CLI-LTIME-03: the axis' unit"
+    );
+    assert!(
+        svg.contains(">TON, PT = LT#1MS_500US</text>"),
+        "CLI-LTIME-03: the title"
+    );
     let t_last = 4_000_000.0;
     let t_end = t_last + t_last * 0.08;
     let x = |t: f64| (x_of(t, 0.0, t_end) * 10.0).round() / 10.0;
@@ -146,7 +152,7 @@ fn ltime_diagram_in_nanoseconds() {
         .iter()
         .filter(|p| (p.0 - x(2_500_000.0)).abs() < 0.06)
         .collect();
-    assert_eq!(step.len(), 2, "a vertical step at 2 500 000 ns: {q:?}");
+    assert_eq!(step.len(), 2, "CLI-LTIME-03: a step at 2 500 000 ns: {q:?}");
     assert_ne!(step[0].1, step[1].1);
 }
 
