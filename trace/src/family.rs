@@ -4,7 +4,7 @@
 //! chosen implementation to a [`Visit`]or, generic over [`BlockOps`], so the engine is written
 //! once for every block, data type and implementation.
 
-use plc_timers::block::{BlockOps, Family, Instruction, Visit};
+use plc_timers::block::{BlockOps, Instruction, Visit};
 use plc_timers::catalog::{Block, DataType};
 
 use super::error::{show, Location, TraceError};
@@ -98,9 +98,7 @@ impl BlockSpec {
         impl Visit for V<'_> {
             type Out = Result<String, String>;
             fn visit<B: BlockOps>(self, _: B, _: B::Kind) -> Self::Out {
-                B::parse_preset(self.0)
-                    .map(|p| p.to_string())
-                    .map_err(|e| e.to_string())
+                parse_preset::<B>(self.0).map(|p| p.to_string())
             }
         }
         self.visit(V(text))
@@ -216,7 +214,7 @@ pub fn parse_data_type(name: &str) -> Result<DataType, String> {
 
 /// The preset of `B` parsed from `text`; the error says what is allowed.
 pub(crate) fn parse_preset<B: BlockOps>(text: &str) -> Result<B::Preset, String> {
-    <B::Family as Family>::parse_preset(text).map_err(|e| e.to_string())
+    B::parse_preset(text).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
