@@ -146,7 +146,7 @@ struct BlockArgs {
     /// also take `RT`, the -(RT)- coil, run before the box call of its row); standard input
     /// when absent or `-`.
     file: Option<PathBuf>,
-    #[arg(long = "type", value_parser = parse_data_type, help = type_help())]
+    #[arg(long = "type", value_name = "TYPE", value_parser = parse_data_type, help = type_help())]
     data_type: Option<DataType>,
     /// Drive the optimized implementation instead of the reference.
     #[arg(long)]
