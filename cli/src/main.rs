@@ -9,13 +9,13 @@ use std::process::ExitCode;
 
 use clap::error::ErrorKind;
 use clap::{Arg, ArgMatches, Args, FromArgMatches, Parser, Subcommand, ValueEnum};
-use plc_timers::catalog::Block;
+use plc_timers::catalog::{Block, DataType};
 use plc_timers::time::{LTime, S5Time, Time};
 use plc_timers_trace::diagram::{self, Window};
-use plc_timers_trace::family::block_names;
+use plc_timers_trace::family::{block_names, merge_data_types};
 use plc_timers_trace::{
-    check, parse_block, preset_option, run, run_explained, vcd, vectors, BlockSpec, Error,
-    Implementation, IntType, Location, PresetValue, TraceError,
+    check, parse_data_type, parse_instruction, preset_option, run, run_explained, vcd, vectors,
+    BlockSpec, Error, Implementation, Location, TraceError,
 };
 
 /// Exit status: the check found a difference.
@@ -55,10 +55,10 @@ enum Command {
     Diagram {
         #[command(flatten)]
         block: BlockArgs,
-        /// Draw from this time on (ms).
+        /// Draw from this time on (in the time column's unit: ms, ns on LTIME).
         #[arg(long)]
         from: Option<u64>,
-        /// Draw up to this time (ms).
+        /// Draw up to this time (in the time column's unit).
         #[arg(long)]
         to: Option<u64>,
         /// The output format.
@@ -68,7 +68,8 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
     },
-    /// Write a trace with the reference outputs as a VCD file (GTKWave, Surfer), time in ms.
+    /// Write a trace with the reference outputs as a VCD file (GTKWave, Surfer), time in ms
+    /// (ns on LTIME).
     Vcd {
         #[command(flatten)]
         block: BlockArgs,
@@ -104,7 +105,32 @@ enum Format {
 }
 
 fn block_help() -> String {
-    format!("The block (ASCII case ignored): {}", block_names())
+    format!(
+        "The block (ASCII case ignored): {}; or an instance type such as TON_LTIME (the block \
+         with --type LTIME)",
+        block_names()
+    )
+}
+
+/// The block as named on the command line, with the data type an instance-type name gives.
+#[derive(Clone, Copy, Debug)]
+struct Named {
+    block: Block,
+    data_type: Option<DataType>,
+}
+
+/// The value parser of the block: [`parse_instruction`].
+fn parse_named(name: &str) -> Result<Named, String> {
+    parse_instruction(name).map(|(block, data_type)| Named { block, data_type })
+}
+
+fn type_help() -> String {
+    let counters: Vec<&str> = Block::Ctu.data_types().iter().map(|t| t.name()).collect();
+    format!(
+        "The data type: IEC timers TIME (default) or LTIME (time column t_ns, PT and ET in ns); \
+         IEC counters the integer type of CV and PV: {} (default INT)",
+        counters.join(" ")
+    )
 }
 
 #[derive(Args, Debug)]
@@ -114,14 +140,14 @@ struct BlockArgs {
     /// the block's and `--type`'s.
     #[command(flatten)]
     preset: PresetArg,
-    #[arg(help = block_help(), value_parser = parse_block)]
-    block: Block,
-    /// The trace (CSV: `t_ms`, the block's inputs and preset; the IEC timers also take `RT`, the
-    /// -(RT)- coil, run before the box call of its row); standard input when absent or `-`.
+    #[arg(help = block_help(), value_parser = parse_named)]
+    block: Named,
+    /// The trace (CSV: `t_ms` (`t_ns` on LTIME), the block's inputs and preset; the IEC timers
+    /// also take `RT`, the -(RT)- coil, run before the box call of its row); standard input
+    /// when absent or `-`.
     file: Option<PathBuf>,
-    #[arg(long = "type", value_parser = IntType::parse,
-          help = format!("IEC counters: the integer type of CV and PV: {} (default INT)", IntType::names()))]
-    int_type: Option<IntType>,
+    #[arg(long = "type", value_name = "TYPE", value_parser = parse_data_type, help = type_help())]
+    data_type: Option<DataType>,
     /// Drive the optimized implementation instead of the reference.
     #[arg(long)]
     optimized: bool,
@@ -129,9 +155,13 @@ struct BlockArgs {
 
 /// The preset given on the command line, read for the block: one option per preset kind of the
 /// catalog (`--tv`, `--pt`, `--pv`). The parser refuses an option the block does not take,
-/// naming the block's, and reads the value as the block's preset cell is read.
+/// naming the block's, and a value the block's preset cell would refuse; it also makes the
+/// block's spec, whose data type the block's name and `--type` give together.
 #[derive(Debug, Default)]
-struct PresetArg(Option<PresetValue>);
+struct PresetArg {
+    spec: Option<BlockSpec>,
+    text: Option<String>,
+}
 
 /// Each preset option of the catalog with its input's name and the blocks that take it.
 fn preset_options() -> Vec<(&'static str, &'static str, Vec<&'static str>)> {
@@ -154,12 +184,13 @@ fn refuse(kind: ErrorKind, message: String) -> clap::Error {
 impl FromArgMatches for PresetArg {
     fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
         // The block and --type are read by their own value parsers; they share these matches.
-        let Some(&block) = m.get_one::<Block>("block") else {
-            return Ok(PresetArg(None));
+        let Some(&Named { block, data_type }) = m.get_one::<Named>("block") else {
+            return Ok(PresetArg::default());
         };
-        let int_type = m.get_one::<IntType>("int_type").copied();
-        let spec = BlockSpec::typed(block, int_type)
-            .map_err(|e| refuse(ErrorKind::ArgumentConflict, e))?;
+        let option = m.get_one::<DataType>("data_type").copied();
+        let conflict = |e| refuse(ErrorKind::ArgumentConflict, e);
+        let data_type = merge_data_types(data_type, option).map_err(conflict)?;
+        let spec = BlockSpec::typed(block, data_type).map_err(conflict)?;
         let preset = block.preset();
         let mut value = None;
         for (option, ..) in preset_options() {
@@ -177,15 +208,18 @@ impl FromArgMatches for PresetArg {
                     ),
                 ));
             }
-            let parsed = PresetValue::parse(spec, text).map_err(|e| {
+            spec.preset_literal(text).map_err(|e| {
                 refuse(
                     ErrorKind::ValueValidation,
                     format!("option --{option}: `{}`: {e}", text.trim()),
                 )
             })?;
-            value = Some(parsed);
+            value = Some(text.clone());
         }
-        Ok(PresetArg(value))
+        Ok(PresetArg {
+            spec: Some(spec),
+            text: value,
+        })
     }
 
     fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
@@ -223,11 +257,11 @@ impl BlockArgs {
         } else {
             Implementation::Reference
         };
-        BlockSpec {
-            block: self.block,
-            int_type: self.int_type.unwrap_or(IntType::DEFAULT),
-            implementation,
-        }
+        // The preset's parser made the spec; it is absent only where clap reads no block.
+        self.preset
+            .spec
+            .unwrap_or_else(|| BlockSpec::new(self.block.block))
+            .with(implementation)
     }
 
     fn input(&self) -> Result<Box<dyn Read>, TraceError> {
@@ -342,7 +376,7 @@ fn vectors_into(dir: &std::path::Path) -> Result<ExitCode, Error> {
 /// `run`: the trace with the reference outputs (and with `--explain` the deciding rules), to
 /// standard output.
 fn run_trace(args: &BlockArgs, explain: bool) -> Result<ExitCode, Error> {
-    let (spec, preset, input) = (args.spec(), args.preset.0, args.input()?);
+    let (spec, preset, input) = (args.spec(), args.preset.text.as_deref(), args.input()?);
     if explain {
         run_explained(spec, preset, input, raw_stdout())?;
     } else {
@@ -354,7 +388,12 @@ fn run_trace(args: &BlockArgs, explain: bool) -> Result<ExitCode, Error> {
 /// `check`: the first difference from the reference, or how many rows agree.
 fn check_trace(args: &BlockArgs, outputs: Option<&[String]>) -> Result<ExitCode, Error> {
     let names: Option<Vec<&str>> = outputs.map(|o| o.iter().map(String::as_str).collect());
-    let report = check(args.spec(), args.preset.0, names.as_deref(), args.input()?)?;
+    let report = check(
+        args.spec(),
+        args.preset.text.as_deref(),
+        names.as_deref(),
+        args.input()?,
+    )?;
     match report.difference {
         None => {
             say(&format!(
@@ -391,10 +430,10 @@ fn draw(
     let out = output(path)?;
     match format {
         Format::Svg => {
-            diagram::svg(args.spec(), args.preset.0, input, window, out)?;
+            diagram::svg(args.spec(), args.preset.text.as_deref(), input, window, out)?;
         }
         Format::Vcd => {
-            vcd::export(args.spec(), args.preset.0, input, out)?;
+            vcd::export(args.spec(), args.preset.text.as_deref(), input, out)?;
         }
     }
     Ok(ExitCode::SUCCESS)
@@ -403,7 +442,12 @@ fn draw(
 /// `vcd`: the trace with the reference outputs as VCD.
 fn export_vcd(args: &BlockArgs, path: &PathBuf) -> Result<ExitCode, Error> {
     let input = args.input()?;
-    vcd::export(args.spec(), args.preset.0, input, output(path)?)?;
+    vcd::export(
+        args.spec(),
+        args.preset.text.as_deref(),
+        input,
+        output(path)?,
+    )?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -1,25 +1,32 @@
 //! The CLI's input paths on arbitrary bytes: the first byte picks the block of the catalog, the
-//! rest is the CSV trace. `run` must return outputs or a located error, never panic; reference
+//! rest is the CSV trace (bit 0x40 of the first byte: an IEC timer on LTIME). `run` must return outputs or a located error, never panic; reference
 //! and optimized must give the same result on every trace.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use plc_timers::catalog::{Block, PresetKind};
-use plc_timers_trace::{check, run, BlockSpec, Error, Implementation, PresetValue};
+use plc_timers::catalog::{Block, DataType, PresetKind};
+use plc_timers_trace::{check, run, BlockSpec, Error, Implementation};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&selector, csv)) = data.split_first() else {
         return;
     };
     let block = Block::ALL[usize::from(selector) % Block::ALL.len()];
-    let spec = BlockSpec::new(block);
+    let ltime = selector & 0x40 != 0 && block.data_types().contains(&DataType::LTime);
+    let spec = match ltime {
+        true => BlockSpec::typed(block, Some(DataType::LTime)).expect("an IEC timer takes LTIME"),
+        false => BlockSpec::new(block),
+    };
     let text = match block.preset().kind {
         PresetKind::S5Time => Some("S5T#30MS"),
+        PresetKind::Time if ltime => Some("LT#20ms"),
         PresetKind::Time => Some("T#20ms"),
         _ if selector & 0x80 != 0 => Some("3"),
         _ => None,
     };
-    let preset = text.map(|t| PresetValue::parse(spec, t).expect("a valid preset"));
+    let preset = text.inspect(|t| {
+        spec.preset_literal(t).expect("a valid preset");
+    });
     let mut results = Vec::new();
     for implementation in [Implementation::Reference, Implementation::Optimized] {
         let mut out = Vec::new();

@@ -1,6 +1,6 @@
 //! Timing diagrams (SVG) drawn as the manuals draw timers: the boolean inputs and outputs as
 //! waveforms, the integer output (ET, BI, CV) as a ramp with a labelled value axis and the
-//! preset as a dashed line, and a time axis in ms.
+//! preset as a dashed line, and a time axis in the unit of the block's clock (ms; ns on LTIME).
 //!
 //! The trace is streamed, never loaded: up to [`EXACT_ROWS`] rows are kept and drawn exactly;
 //! past that, rows are folded into at most `2 x` [`COLUMNS`] time buckets (one or two per pixel
@@ -16,7 +16,7 @@ use plc_timers::catalog::{Port, ValueKind};
 
 use super::engine::{observe, Columns, Observation, Observer};
 use super::error::Error;
-use super::family::{BlockSpec, PresetValue, Value};
+use super::family::{BlockSpec, Value};
 
 /// Rows drawn one by one; a longer trace is drawn from buckets.
 pub const EXACT_ROWS: usize = 2048;
@@ -38,9 +38,9 @@ const LANES: usize = 10;
 /// Which part of the trace to draw.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Window {
-    /// Draw from this time (ms) on; the state at that time is the one the rows before it left.
+    /// Draw from this time (in the time column's unit) on; the state at that time is the one the rows before it left.
     pub from: Option<u64>,
-    /// Draw up to this time (ms); reading stops after it.
+    /// Draw up to this time (in the time column's unit); reading stops after it.
     pub to: Option<u64>,
 }
 
@@ -55,7 +55,7 @@ pub struct Stats {
     pub exact: bool,
     /// The most samples or buckets held at once.
     pub held: usize,
-    /// The width of a bucket in ms at the end (0 when drawn exactly).
+    /// The width of a bucket in the time column's unit at the end (0 when drawn exactly).
     pub bucket_ms: u64,
 }
 
@@ -64,10 +64,10 @@ pub struct Stats {
 struct Sample {
     t: u64,
     v: [i128; LANES],
-    /// Signed milliseconds per unit of the ramp while it runs (ET +1, BI minus its base).
+    /// Signed clock units per unit of the ramp while it runs (ET +1, BI minus its base).
     ramp: Option<i64>,
-    /// The preset as written.
-    preset: PresetValue,
+    /// The preset's literal: its index in [`Diagram::literals`].
+    preset: usize,
 }
 
 /// The rows of one time bucket, per lane.
@@ -194,13 +194,18 @@ struct Diagram {
     origin: Option<u64>,
     /// The last drawn row's offset.
     last_t: u64,
+    /// The presets' literals in the order met (each one again when it changes back).
+    literals: Vec<String>,
     /// The first drawn row's preset, and whether a later drawn row has another.
-    preset: Option<(PresetValue, bool)>,
+    preset: Option<(usize, bool)>,
     stats: Stats,
 }
 
 impl Diagram {
-    fn sample(&self, o: &Observation) -> Sample {
+    fn sample(&mut self, o: &Observation<'_>) -> Sample {
+        if self.literals.last().map(String::as_str) != Some(o.preset_value) {
+            self.literals.push(o.preset_value.to_string());
+        }
         let mut v = [0i128; LANES];
         for (k, lane) in self.lanes.iter().enumerate() {
             v[k] = match lane.kind {
@@ -224,7 +229,7 @@ impl Diagram {
             t: o.t,
             v,
             ramp,
-            preset: o.preset_value,
+            preset: self.literals.len() - 1,
         }
     }
 
@@ -234,7 +239,9 @@ impl Diagram {
         self.last_t = s.t;
         match &mut self.preset {
             None => self.preset = Some((s.preset, false)),
-            Some((first, changes)) => *changes |= *first != s.preset,
+            Some((first, changes)) => {
+                *changes |= self.literals[*first] != self.literals[s.preset];
+            }
         }
         self.stats.drawn += 1;
         match &mut self.buckets {
@@ -280,7 +287,7 @@ impl Observer for Diagram {
         Ok(())
     }
 
-    fn step(&mut self, o: &Observation) -> Result<bool, Error> {
+    fn step(&mut self, o: &Observation<'_>) -> Result<bool, Error> {
         self.stats.rows += 1;
         let s = self.sample(o);
         if let Some(to) = self.window.to {
@@ -311,7 +318,7 @@ impl Observer for Diagram {
 /// Draws the trace read from `input` through the block of `spec` as an SVG to `out`.
 pub fn svg<R: Read, W: Write>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     input: R,
     window: Window,
     mut out: W,
@@ -326,6 +333,7 @@ pub fn svg<R: Read, W: Write>(
         before: None,
         origin: None,
         last_t: 0,
+        literals: Vec::new(),
         preset: None,
         stats: Stats::default(),
     };
@@ -515,7 +523,10 @@ fn render(d: &Diagram) -> String {
     // The preset as its literal (`TV = S5T#50MS`), and where it comes from.
     let pname = columns.block.preset().port.name();
     let (label, title) = match d.preset {
-        Some((p, false)) => (format!("{pname} = {p}"), format!("{pname} = {p}")),
+        Some((p, false)) => {
+            let p = &d.literals[p];
+            (format!("{pname} = {p}"), format!("{pname} = {p}"))
+        }
         Some((_, true)) => (pname.to_string(), format!("{pname} changes")),
         None => (pname.to_string(), String::new()),
     };
@@ -652,7 +663,11 @@ fn render(d: &Diagram) -> String {
             origin.saturating_add(t as u64)
         );
     }
-    let unit = if columns.timed { "t [ms]" } else { "row" };
+    let unit = if columns.timed {
+        format!("t [{}]", columns.unit)
+    } else {
+        "row".to_string()
+    };
     let _ = writeln!(
         s,
         "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\">{unit}</text>",

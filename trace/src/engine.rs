@@ -1,23 +1,28 @@
 //! The trace engine: the header resolved once against the catalog into column indices, typed
 //! rows, and the three ways a trace is consumed: [`run`] (write the reference outputs),
 //! [`check`] (compare another implementation's outputs) and [`observe`] (hand each step to a
-//! diagram or a VCD writer). All three are generic over the [`Adapter`] that
-//! [`dispatch`] chooses.
+//! diagram or a VCD writer). All three are written once, generic over the core's
+//! [`BlockOps`], for the instance [`BlockSpec::visit`] chooses.
 
 use std::fmt;
 use std::io::{Read, Write};
 
+use plc_timers::block::{BlockOps, Family, Visit};
 use plc_timers::catalog::{Block, Port, ValueKind};
+use plc_timers::time::CpuTime;
 
 use super::error::{show, Error, Location, TraceError};
-use super::family::{
-    dispatch, names_of, Adapter, BlockSpec, Outputs, PresetValue, Signals, Value, Visit,
-};
+use super::family::{names_of, parse_preset, BlockSpec, Outputs, Signals, Value, TIME_COLUMNS};
 use super::reader::{Reader, Record};
 use plc_timers::rule::{RuleSet, MAX_OUTPUTS as RULE_OUTPUTS};
 
-/// The name of the time column.
-pub const TIME_COLUMN: &str = "t_ms";
+/// The unit of a clock (`ms`, `ns`) in words, as messages write it.
+fn unit_words(unit: &str) -> &'static str {
+    match unit {
+        "ns" => "nanoseconds",
+        _ => "milliseconds",
+    }
+}
 
 /// The option that gives `block`'s preset on the command line (without the dashes), also the
 /// Python keyword argument: the preset input's name lower-cased (`tv`, `pt`, `pv`).
@@ -67,7 +72,9 @@ enum Mode {
 struct Layout {
     /// The header's names as written (trimmed).
     names: Vec<String>,
-    /// The column of `t_ms`.
+    /// The time column's name (`t_ms`, `t_ns` on LTIME).
+    time_name: &'static str,
+    /// The column of the time.
     time: Option<usize>,
     /// Each boolean input column and its input.
     bools: Vec<(usize, Port)>,
@@ -94,9 +101,12 @@ fn utf8_cell<'a>(rec: &Record<'a>, i: usize) -> Result<&'a str, TraceError> {
 }
 
 impl Layout {
-    fn resolve(block: Block, header: &Record<'_>, mode: Mode) -> Result<Layout, TraceError> {
+    fn resolve(spec: BlockSpec, header: &Record<'_>, mode: Mode) -> Result<Layout, TraceError> {
+        let block = spec.block();
+        let time_name = spec.time_column();
         let mut layout = Layout {
             names: Vec::with_capacity(header.len()),
+            time_name,
             time: None,
             bools: Vec::new(),
             preset: None,
@@ -120,8 +130,21 @@ impl Layout {
                 .coils()
                 .iter()
                 .position(|p| p.name().eq_ignore_ascii_case(name));
-            let duplicate = if name.eq_ignore_ascii_case(TIME_COLUMN) {
+            let duplicate = if name.eq_ignore_ascii_case(time_name) {
                 layout.time.replace(i).is_some()
+            } else if let Some(other) = TIME_COLUMNS
+                .into_iter()
+                .find(|t| t.eq_ignore_ascii_case(name))
+            {
+                // The other unit's time column: the trace was written for another data type.
+                return Err(here(format!(
+                    "`{name}` is a time in {}; {block} on {} counts its time in {} \
+                     (`{time_name}`), so its columns are {}",
+                    unit_words(&other[2..]),
+                    spec.data_type(),
+                    unit_words(spec.instruction.clock_unit()),
+                    columns(block, time_name, mode)
+                )));
             } else if let Some(k) = input {
                 let again = seen_inputs >> k & 1 == 1;
                 seen_inputs |= 1 << k;
@@ -152,13 +175,13 @@ impl Layout {
                     port.name(),
                     coil_form(port),
                     names_of(|b| b.coils().contains(&port)).replace(' ', ", "),
-                    columns(block, mode)
+                    columns(block, time_name, mode)
                 )));
             } else {
                 return Err(here(format!(
                     "unknown column `{}`; {block} takes the columns {}",
                     show(name.as_bytes()),
-                    columns(block, mode)
+                    columns(block, time_name, mode)
                 )));
             };
             if duplicate {
@@ -170,7 +193,7 @@ impl Layout {
             return Err(TraceError::new(
                 Location::Line(layout.line),
                 format!(
-                    "{block} is a timer: the header needs a `{TIME_COLUMN}` column; the header is `{}`",
+                    "{block} is a timer: the header needs a `{time_name}` column; the header is `{}`",
                     show(header.raw())
                 ),
             ));
@@ -194,8 +217,8 @@ fn coil_form(port: Port) -> String {
 }
 
 /// The columns `block`'s traces may have, as a message lists them.
-fn columns(block: Block, mode: Mode) -> String {
-    let mut names = vec![TIME_COLUMN];
+fn columns(block: Block, time_name: &'static str, mode: Mode) -> String {
+    let mut names = vec![time_name];
     names.extend(block.inputs().iter().map(|p| p.name()));
     names.extend(block.coils().iter().map(|p| p.name()));
     if mode == Mode::WithOutputs {
@@ -215,7 +238,7 @@ pub fn parse_bool(cell: &[u8]) -> Option<bool> {
     }
 }
 
-/// Parses a whole number of milliseconds, 0..=u64::MAX.
+/// Parses a whole number (of the clock's units), 0..=u64::MAX.
 #[inline(always)]
 pub fn parse_u64(cell: &[u8]) -> Option<u64> {
     if cell.is_empty() || cell.len() > 20 {
@@ -327,44 +350,46 @@ fn write_value(out: &mut Vec<u8>, v: Value) {
 }
 
 /// One executed row.
-struct Row<F: Adapter> {
-    /// `t_ms`, or the row's index (0-based) when the trace has none.
+struct Row<B: BlockOps> {
+    /// The time column's value, or the row's index (0-based) when the trace has none.
     t: u64,
     signals: Signals,
-    preset: F::Preset,
-    output: F::Output,
+    preset: B::Preset,
+    output: B::Output,
     /// With [`Engine::explain`]: the rules that decided each output (catalog order), the
     /// rules that acted on the state, and the outputs the call wrote (bit per output).
     rules: Option<([RuleSet; RULE_OUTPUTS], RuleSet, u8)>,
 }
 
-/// A family with its resolved header, driven row by row.
-struct Engine<F: Adapter> {
-    family: F,
+/// A block instance with its resolved header, driven row by row.
+struct Engine<B: BlockOps> {
+    block: B,
+    kind: B::Kind,
+    spec: BlockSpec,
     layout: Layout,
     /// The preset of the command line, parsed once.
-    option: Option<F::Preset>,
+    option: Option<B::Preset>,
     /// The last preset cell's text and value: a preset column is parsed again only when it
     /// changes.
-    cached: Option<(Vec<u8>, F::Preset)>,
+    cached: Option<(Vec<u8>, B::Preset)>,
     last: u64,
     rows: u64,
-    /// Whether each call is explained ([`Adapter::call_explained`]).
+    /// Whether each call is explained ([`BlockOps::step_explained`]).
     explain: bool,
 }
 
-impl<F: Adapter> Engine<F> {
+impl<B: BlockOps> Engine<B> {
     fn new(
-        family: F,
+        (block_ops, kind, spec): (B, B::Kind, BlockSpec),
         header: &Record<'_>,
         mode: Mode,
-        preset: Option<PresetValue>,
-    ) -> Result<Engine<F>, TraceError> {
-        let block = family.block();
-        let layout = Layout::resolve(block, header, mode)?;
+        preset: Option<&str>,
+    ) -> Result<Engine<B>, TraceError> {
+        let block = spec.block();
+        let layout = Layout::resolve(spec, header, mode)?;
         let p = block.preset();
         let option = preset
-            .map(|v| family.preset(v))
+            .map(parse_preset::<B>)
             .transpose()
             .map_err(|e| TraceError::new(Location::Option(preset_option(block)), e))?;
         if let (None, None) = (layout.preset, option) {
@@ -378,7 +403,9 @@ impl<F: Adapter> Engine<F> {
             ));
         }
         Ok(Engine {
-            family,
+            block: block_ops,
+            kind,
+            spec,
             layout,
             option,
             cached: None,
@@ -394,7 +421,7 @@ impl<F: Adapter> Engine<F> {
 
     /// Reads `rec`'s inputs and executes the block once.
     #[inline(always)]
-    fn step(&mut self, rec: &Record<'_>) -> Result<Row<F>, Box<TraceError>> {
+    fn step(&mut self, rec: &Record<'_>) -> Result<Row<B>, Box<TraceError>> {
         let width = self.layout.names.len();
         if rec.len() != width {
             return Err(Box::new(self.width_error(rec)));
@@ -407,8 +434,10 @@ impl<F: Adapter> Engine<F> {
                         rec,
                         i,
                         format!(
-                            "`{}` is not a time; {TIME_COLUMN} is a whole number of milliseconds, 0..={}",
+                            "`{}` is not a time; {} is a whole number of {}, 0..={}",
                             show(cell),
+                            self.layout.time_name,
+                            unit_words(self.spec.instruction.clock_unit()),
                             u64::MAX
                         ),
                     )));
@@ -419,8 +448,8 @@ impl<F: Adapter> Engine<F> {
                         rec,
                         i,
                         format!(
-                            "{TIME_COLUMN} goes backwards: {t} after {}; time must not decrease",
-                            self.last
+                            "{} goes backwards: {t} after {}; time must not decrease",
+                            self.layout.time_name, self.last
                         ),
                     )));
                 }
@@ -456,11 +485,12 @@ impl<F: Adapter> Engine<F> {
                 )));
             }
         };
+        let now = CpuTime::from_ticks(t);
         let (output, rules) = if self.explain {
-            let e = self.family.call_explained(t, signals, preset);
+            let e = self.block.step_explained(self.kind, now, signals, preset);
             (e.output, Some((e.outputs, e.state, e.written)))
         } else {
-            (self.family.call(t, signals, preset), None)
+            (self.block.step(self.kind, now, signals, preset), None)
         };
         self.last = t;
         self.rows += 1;
@@ -473,7 +503,7 @@ impl<F: Adapter> Engine<F> {
         })
     }
 
-    fn preset_cell(&mut self, rec: &Record<'_>, i: usize) -> Result<F::Preset, Box<TraceError>> {
+    fn preset_cell(&mut self, rec: &Record<'_>, i: usize) -> Result<B::Preset, Box<TraceError>> {
         let cell = rec.cell(i);
         if let Some((text, value)) = &self.cached {
             if text.as_slice() == cell {
@@ -482,9 +512,7 @@ impl<F: Adapter> Engine<F> {
         }
         let text = std::str::from_utf8(cell)
             .map_err(|_| self.cell_error(rec, i, format!("`{}` is not UTF-8 text", show(cell))))?;
-        let value = self
-            .family
-            .parse_preset(text)
+        let value = parse_preset::<B>(text)
             .map_err(|e| self.cell_error(rec, i, format!("`{}`: {e}", show(cell))))?;
         let (buf, v) = self.cached.get_or_insert_with(|| (Vec::new(), value));
         buf.clear();
@@ -524,7 +552,7 @@ impl<F: Adapter> Engine<F> {
 fn empty() -> TraceError {
     TraceError::new(
         Location::Line(1),
-        "the trace is empty: it needs a header row (e.g. `t_ms,IN`)",
+        "the trace is empty: it needs a header row (e.g. `t_ms,IN`; `t_ns,IN` on LTIME)",
     )
 }
 
@@ -537,11 +565,11 @@ fn empty() -> TraceError {
 /// (and flushed) and the error is returned. Returns the number of data rows.
 pub fn run<R: Read, W: Write>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     input: R,
     output: W,
 ) -> Result<u64, Error> {
-    dispatch(spec, V(preset, input, output, false))
+    spec.visit(V(spec, preset, input, output, false))
 }
 
 /// [`run`] with one more column, `rules`: the IDs of the requirements that decided the row's
@@ -550,40 +578,41 @@ pub fn run<R: Read, W: Write>(
 /// no rules: its column is empty.
 pub fn run_explained<R: Read, W: Write>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     input: R,
     output: W,
 ) -> Result<u64, Error> {
-    dispatch(spec, V(preset, input, output, true))
+    spec.visit(V(spec, preset, input, output, true))
 }
 
-struct V<R, W>(Option<PresetValue>, R, W, bool);
+struct V<'a, R, W>(BlockSpec, Option<&'a str>, R, W, bool);
 
-impl<R: Read, W: Write> Visit for V<R, W> {
+impl<R: Read, W: Write> Visit for V<'_, R, W> {
     type Out = Result<u64, Error>;
-    fn visit<F: Adapter>(self, family: F) -> Self::Out {
-        run_family(family, self.0, self.1, self.2, self.3)
+    fn visit<B: BlockOps>(self, block: B, kind: B::Kind) -> Self::Out {
+        run_block((block, kind, self.0), self.1, self.2, self.3, self.4)
     }
 }
 
 /// The name of the column `run --explain` adds.
 pub const RULES_COLUMN: &str = "rules";
 
-fn run_family<F: Adapter, R: Read, W: Write>(
-    family: F,
-    preset: Option<PresetValue>,
+fn run_block<B: BlockOps, R: Read, W: Write>(
+    block: (B, B::Kind, BlockSpec),
+    preset: Option<&str>,
     input: R,
     mut output: W,
     explain: bool,
 ) -> Result<u64, Error> {
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::Inputs, preset)?;
+    let mut engine = Engine::new(block, &header, Mode::Inputs, preset)?;
     engine.explain = explain;
-    let n_outputs = engine.family.block().outputs().len();
+    let outputs = engine.spec.block().outputs();
+    let n_outputs = outputs.len();
     let mut out: Vec<u8> = Vec::with_capacity(OUT_BUFFER + 1024);
     out.extend_from_slice(header.raw());
-    for p in engine.family.block().outputs() {
+    for p in outputs {
         out.push(b',');
         out.extend_from_slice(p.name().as_bytes());
     }
@@ -603,7 +632,7 @@ fn run_family<F: Adapter, R: Read, W: Write>(
             Err(e) => break Err(*e),
         };
         out.extend_from_slice(rec.raw());
-        for &v in engine.family.values(&row.output).as_slice() {
+        for &v in B::values(engine.kind, &row.output).as_slice() {
             out.push(b',');
             write_value(&mut out, v);
         }
@@ -770,18 +799,18 @@ pub struct CheckReport {
 /// compared and the trace must have a column for each. A malformed output cell is bad input.
 pub fn check<R: Read>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     outputs: Option<&[&str]>,
     input: R,
 ) -> Result<CheckReport, TraceError> {
-    struct V<'a, R>(Option<PresetValue>, Option<&'a [&'a str]>, R);
+    struct V<'a, R>(BlockSpec, Option<&'a str>, Option<&'a [&'a str]>, R);
     impl<R: Read> Visit for V<'_, R> {
         type Out = Result<CheckReport, TraceError>;
-        fn visit<F: Adapter>(self, family: F) -> Self::Out {
-            check_family(family, self.0, self.1, self.2)
+        fn visit<B: BlockOps>(self, block: B, kind: B::Kind) -> Self::Out {
+            check_block((block, kind, self.0), self.1, self.2, self.3)
         }
     }
-    dispatch(spec, V(preset, outputs, input))
+    spec.visit(V(spec, preset, outputs, input))
 }
 
 /// The catalog indices of the outputs to compare.
@@ -835,19 +864,19 @@ fn values_of(block: Block, compared: &[(usize, usize)], text: &[u8]) -> Vec<(&'s
         .collect()
 }
 
-fn check_family<F: Adapter, R: Read>(
-    family: F,
-    preset: Option<PresetValue>,
+fn check_block<B: BlockOps, R: Read>(
+    instance: (B, B::Kind, BlockSpec),
+    preset: Option<&str>,
     outputs: Option<&[&str]>,
     input: R,
 ) -> Result<CheckReport, TraceError> {
-    let block = family.block();
+    let block = instance.2.block();
     let chosen = chosen_outputs(block, outputs)?;
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::WithOutputs, preset)?;
+    let mut engine = Engine::new(instance, &header, Mode::WithOutputs, preset)?;
     engine.explain = true;
-    let explained = engine.family.explains();
+    let explained = B::EXPLAINS;
     // Per output (catalog order), the latest row whose call wrote it: its line, the rules that
     // determined the output there and those that acted on the state there.
     let mut wrote: [Option<(u64, RuleSet, RuleSet)>; RULE_OUTPUTS] = [None; RULE_OUTPUTS];
@@ -888,7 +917,7 @@ fn check_family<F: Adapter, R: Read>(
         .collect();
     while let Some(rec) = reader.next_record()? {
         let row = engine.step(&rec).map_err(|e| *e)?;
-        let values = engine.family.values(&row.output);
+        let values = B::values(engine.kind, &row.output);
         for (k, &(column, o)) in compared.iter().enumerate() {
             let kind = kinds[k];
             let cell = rec.cell(column);
@@ -990,8 +1019,10 @@ fn check_family<F: Adapter, R: Read>(
 pub struct Columns {
     /// The block.
     pub block: Block,
-    /// Whether the trace has `t_ms` (otherwise the time of a row is its index).
+    /// Whether the trace has its time column (otherwise the time of a row is its index).
     pub timed: bool,
+    /// The unit of the time column and of the block's clock: `ms`, or `ns` on LTIME.
+    pub unit: &'static str,
     /// The boolean inputs the trace has, in catalog order, then the coils it has (`RT`).
     pub inputs: Vec<Port>,
     /// Whether the preset is a column of the trace (otherwise the command line gives it).
@@ -1000,8 +1031,8 @@ pub struct Columns {
 
 /// One step as an [`Observer`] sees it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Observation {
-    /// `t_ms`, or the row's index.
+pub struct Observation<'a> {
+    /// The time column's value (in [`Columns::unit`]), or the row's index.
     pub t: u64,
     /// The row's line.
     pub line: u64,
@@ -1009,12 +1040,12 @@ pub struct Observation {
     pub signals: Signals,
     /// The outputs, in catalog order.
     pub outputs: Outputs,
-    /// Milliseconds per unit of the integer output while it runs ([`Adapter::ramp`]).
+    /// Clock units per unit of the integer output while it runs ([`Family::ramp`]).
     pub ramp: Option<u64>,
-    /// The preset in the unit of the integer output ([`Adapter::preset_mark`]).
+    /// The preset in the unit of the integer output ([`Family::preset_units`]).
     pub preset: i128,
-    /// The preset as written ([`Adapter::preset_value`]).
-    pub preset_value: PresetValue,
+    /// The preset as its literal (its `Display`: `T#500MS`, `C#5`).
+    pub preset_value: &'a str,
 }
 
 /// Something that consumes a trace step by step (a diagram, a VCD file).
@@ -1022,36 +1053,37 @@ pub trait Observer {
     /// Called once with the trace's columns, before any step.
     fn start(&mut self, columns: &Columns) -> Result<(), Error>;
     /// Called for each step; `false` stops reading.
-    fn step(&mut self, step: &Observation) -> Result<bool, Error>;
+    fn step(&mut self, step: &Observation<'_>) -> Result<bool, Error>;
 }
 
 /// Runs the trace through the block of `spec` and hands each step to `observer`.
 pub fn observe<R: Read>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     input: R,
     observer: &mut dyn Observer,
 ) -> Result<(), Error> {
-    struct V<'a, R>(Option<PresetValue>, R, &'a mut dyn Observer);
+    struct V<'a, R>(BlockSpec, Option<&'a str>, R, &'a mut dyn Observer);
     impl<R: Read> Visit for V<'_, R> {
         type Out = Result<(), Error>;
-        fn visit<F: Adapter>(self, family: F) -> Self::Out {
-            observe_family(family, self.0, self.1, self.2)
+        fn visit<B: BlockOps>(self, block: B, kind: B::Kind) -> Self::Out {
+            observe_block((block, kind, self.0), self.1, self.2, self.3)
         }
     }
-    dispatch(spec, V(preset, input, observer))
+    spec.visit(V(spec, preset, input, observer))
 }
 
-fn observe_family<F: Adapter, R: Read>(
-    family: F,
-    preset: Option<PresetValue>,
+fn observe_block<B: BlockOps, R: Read>(
+    instance: (B, B::Kind, BlockSpec),
+    preset: Option<&str>,
     input: R,
     observer: &mut dyn Observer,
 ) -> Result<(), Error> {
-    let block = family.block();
+    let spec = instance.2;
+    let block = spec.block();
     let mut reader = Reader::new(input);
     let header = reader.next_record()?.ok_or_else(empty)?;
-    let mut engine = Engine::new(family, &header, Mode::Inputs, preset)?;
+    let mut engine = Engine::new(instance, &header, Mode::Inputs, preset)?;
     let inputs = block
         .inputs()
         .iter()
@@ -1062,19 +1094,25 @@ fn observe_family<F: Adapter, R: Read>(
     observer.start(&Columns {
         block,
         timed: engine.layout.time.is_some(),
+        unit: spec.instruction.clock_unit(),
         inputs,
         preset_column: engine.layout.preset.is_some(),
     })?;
+    // The preset's literal, written again only when the preset changes.
+    let mut shown: Option<(B::Preset, String)> = None;
     while let Some(rec) = reader.next_record()? {
         let row = engine.step(&rec).map_err(|e| *e)?;
+        if shown.as_ref().is_none_or(|(p, _)| *p != row.preset) {
+            shown = Some((row.preset, row.preset.to_string()));
+        }
         let go_on = observer.step(&Observation {
             t: row.t,
             line: rec.line(),
             signals: row.signals,
-            outputs: engine.family.values(&row.output),
-            ramp: engine.family.ramp(&row.output),
-            preset: engine.family.preset_mark(row.preset),
-            preset_value: engine.family.preset_value(row.preset),
+            outputs: B::values(engine.kind, &row.output),
+            ramp: <B::Family as Family>::ramp(&row.output),
+            preset: <B::Family as Family>::preset_units(row.preset),
+            preset_value: shown.as_ref().map_or("", |(_, text)| text),
         })?;
         if !go_on {
             break;

@@ -3,9 +3,10 @@
 //! (`# cargo run --release -- run TON --pt T#500ms examples/traces/ton.csv`); the block, its
 //! preset and the file are read from that line, so the examples name their own settings.
 
+use plc_timers::block::Instruction;
 use plc_timers::catalog::Block;
 
-use super::family::{BlockSpec, PresetValue};
+use super::family::BlockSpec;
 
 mod files {
     include!(concat!(env!("OUT_DIR"), "/examples.rs"));
@@ -27,10 +28,9 @@ pub struct Example {
     pub command: &'static str,
     /// The block and `--type`.
     pub spec: BlockSpec,
-    /// The preset as the command writes it (`T#500ms`), if the command gives one.
-    pub preset_text: Option<&'static str>,
-    /// That preset, read for the block.
-    pub preset: Option<PresetValue>,
+    /// The preset as the command writes it (`T#500ms`), if the command gives one; checked to
+    /// be one of the block's.
+    pub preset: Option<&'static str>,
     /// The whole text.
     pub text: &'static str,
 }
@@ -66,24 +66,25 @@ fn parse(stem: &'static str, text: &'static str) -> Result<Example, String> {
         }
     }
     let spec = BlockSpec::parse(block, int_type).map_err(|e| format!("{stem}.csv: {e}"))?;
-    let option = super::engine::preset_option(spec.block);
+    let option = super::engine::preset_option(spec.block());
     let preset = match preset_text {
         Some((o, _)) if o != option => {
             return Err(format!(
                 "{stem}.csv: {} takes --{option}, not --{o}",
-                spec.block
+                spec.block()
             ))
         }
-        Some((_, v)) => Some(
-            PresetValue::parse(spec, v).map_err(|e| format!("{stem}.csv: --{option} {v}: {e}"))?,
-        ),
+        Some((_, v)) => {
+            spec.preset_literal(v)
+                .map_err(|e| format!("{stem}.csv: --{option} {v}: {e}"))?;
+            Some(v)
+        }
         None => None,
     };
     Ok(Example {
         stem,
         command,
         spec,
-        preset_text: preset_text.map(|(_, v)| v),
         preset,
         text,
     })
@@ -97,31 +98,49 @@ pub fn all() -> Result<Vec<Example>, String> {
         .collect()
 }
 
-/// The example of `block`.
+/// The example of `block` on its default data type.
 pub fn of(block: Block) -> Option<Example> {
-    all().ok()?.into_iter().find(|e| e.spec.block == block)
+    of_instruction(Instruction::of(block))
+}
+
+/// The example of `instruction`, if it has one (every block on its default data type has).
+pub fn of_instruction(instruction: Instruction) -> Option<Example> {
+    all()
+        .ok()?
+        .into_iter()
+        .find(|e| e.spec.instruction == instruction)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Every catalog block has exactly one example, named after it, whose first line is its
-    /// command.
+    /// Every catalog block has exactly one example on its default data type, named after it,
+    /// whose first line is its command and gives its preset; an example on another data type
+    /// is named after the block and the type (`ton_ltime`).
     #[test]
     fn one_example_per_block() {
         let all = all().expect("every example's first line is its command");
         for block in Block::ALL {
-            let mine: Vec<&Example> = all.iter().filter(|e| e.spec.block == block).collect();
+            let mine: Vec<&Example> = all
+                .iter()
+                .filter(|e| e.spec.instruction == Instruction::of(block))
+                .collect();
             assert_eq!(mine.len(), 1, "{block}");
             assert_eq!(mine[0].stem, block.name().to_ascii_lowercase());
-            assert_eq!(
-                mine[0].preset.map(|p| p.kind()),
-                Some(block.preset().kind),
-                "{block}"
-            );
+            assert!(mine[0].preset.is_some(), "{block}");
         }
-        assert_eq!(all.len(), Block::ALL.len());
+        for e in &all {
+            let i = e.spec.instruction;
+            let stem = if i == Instruction::of(i.block()) {
+                i.block().name().to_ascii_lowercase()
+            } else {
+                format!("{}_{}", i.block().name(), i.data_type().name()).to_ascii_lowercase()
+            };
+            assert_eq!(e.stem, stem);
+            assert_eq!(all.iter().filter(|o| o.spec.instruction == i).count(), 1);
+        }
+        assert!(all.len() >= Block::ALL.len());
         assert!(parse("x", "# cargo run --release -- run TON x.csv\n").is_err());
         assert!(parse("x", "t_ms,IN\n").is_err());
     }
@@ -139,7 +158,7 @@ mod tests {
             e.spec,
             BlockSpec::parse("CTU", Some("usint")).expect("USINT")
         );
-        assert_eq!(e.preset, Some(PresetValue::Integer(3)));
+        assert_eq!(e.preset, Some("3"));
         assert!(parse(
             "x",
             "# cargo run --release -- run CTU --tv 3 examples/traces/x.csv\n"

@@ -5,7 +5,8 @@
 //! (package plc-timers-cli), the Python package and the fuzz targets all run this one engine.
 //!
 //! - [`reader`]: a strict CSV reader that knows each record's line.
-//! - [`family`]: the generic adapter between a row and a block family, and [`dispatch`].
+//! - [`family`]: a block as the command line asks for it ([`BlockSpec`]: the core's
+//!   [`plc_timers::block::Instruction`] and implementation), and the parsers of its names.
 //! - [`engine`]: the header resolved against the catalog; [`run`], [`check`], [`observe`];
 //!   [`parse_value`] reads one cell as a trace does.
 //! - [`diagram`]: timing diagrams (SVG), streamed; `vcd`: VCD export (feature `vcd`).
@@ -33,5 +34,6 @@ pub use engine::{
 };
 pub use error::{show, Error, Location, TraceError};
 pub use family::{
-    dispatch, parse_block, BlockSpec, Implementation, IntType, PresetValue, Signals, Value,
+    parse_block, parse_data_type, parse_instruction, BlockSpec, Implementation, Outputs, Signals,
+    Value,
 };

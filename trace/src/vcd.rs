@@ -1,5 +1,6 @@
 //! VCD export (IEEE 1364 value change dump) for GTKWave, Surfer and other waveform viewers: the
-//! trace's boolean inputs, the preset and the reference outputs as signals, the time in ms.
+//! trace's boolean inputs, the preset and the reference outputs as signals, the time in the
+//! unit of the block's clock (1 ms; 1 ns on LTIME).
 //! Written with the `vcd` crate, streamed: only changes are written.
 
 use std::io::{Read, Write};
@@ -9,7 +10,7 @@ use vcd::{IdCode, TimescaleUnit, VarType};
 
 use super::engine::{observe, Columns, Observation, Observer};
 use super::error::Error;
-use super::family::{BlockSpec, PresetValue, Value};
+use super::family::{BlockSpec, Value};
 
 /// The width of integer signals (ET, BI, CV, the preset): 64 bits, two's complement.
 pub const INT_BITS: u32 = 64;
@@ -49,7 +50,11 @@ fn bits(v: i128, width: u32) -> impl Iterator<Item = vcd::Value> {
 impl<W: Write> Observer for VcdObserver<W> {
     fn start(&mut self, columns: &Columns) -> Result<(), Error> {
         let w = &mut self.writer;
-        w.timescale(1, TimescaleUnit::MS)?;
+        let unit = match columns.unit {
+            "ns" => TimescaleUnit::NS,
+            _ => TimescaleUnit::MS,
+        };
+        w.timescale(1, unit)?;
         w.add_module(&columns.block.name().to_ascii_lowercase())?;
         for &port in &columns.inputs {
             let id = w.add_wire(1, port.name())?;
@@ -92,7 +97,7 @@ impl<W: Write> Observer for VcdObserver<W> {
         Ok(())
     }
 
-    fn step(&mut self, o: &Observation) -> Result<bool, Error> {
+    fn step(&mut self, o: &Observation<'_>) -> Result<bool, Error> {
         self.rows += 1;
         if self.time != Some(o.t) {
             self.writer.timestamp(o.t)?;
@@ -123,10 +128,11 @@ impl<W: Write> Observer for VcdObserver<W> {
 }
 
 /// Writes the trace read from `input`, run through the block of `spec`, as a VCD file to `out`.
-/// The time unit is 1 ms; a trace without `t_ms` uses the row index. Returns the rows written.
+/// The time unit is the block's clock's (1 ms; 1 ns on LTIME); a trace without its time column
+/// uses the row index. Returns the rows written.
 pub fn export<R: Read, W: Write>(
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<&str>,
     input: R,
     out: W,
 ) -> Result<u64, Error> {

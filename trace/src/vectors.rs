@@ -21,14 +21,23 @@
 //!   runtime differs (`spec/s5.md` "Departures weighed", `spec/iec.md`, `spec/counter.md`).
 //!   The IEC timers' file has the optional `RT` column (the `-(RT)-` coil, IEC-RT-01); no
 //!   other file sets a coil, so theirs have the box's columns only.
+//!
+//! The S7-1500 long IEC timers (`TON-LTIME`, …; `--type LTIME`, time column `t_ns`) have their
+//! own files: random traces with presets from 1 ns to past TIME's range (`LT#30D`), gaps of up
+//! to 30 days; `long-gaps.csv` with gaps past 2^62 and 2^63 ns under presets of `LT#30D` and
+//! LTIME's largest value (LTIMER-CLOCK-01); and the TIME files' `preset-change.csv`,
+//! `simultaneous.csv` and `decisions.csv` read in nanoseconds (`T#20MS` as `LT#20NS`, the
+//! times unchanged), which LTIMER-SAME-01 says behave alike.
 
+use plc_timers::block::{BlockOps, Visit};
 use plc_timers::catalog::Port::{self, Cd, Cu, Fr, In, Ld, Rt, R, S};
-use plc_timers::catalog::{Block, Family, PresetKind, ValueKind};
+use plc_timers::catalog::{Block, DataType, Family, PresetKind, ValueKind};
+use plc_timers::time::Time;
 
-use super::engine::{run, TIME_COLUMN};
+use super::engine::run;
 use super::error::TraceError;
 use super::examples;
-use super::family::{BlockSpec, IntType, Signals};
+use super::family::{parse_preset, BlockSpec, Signals};
 
 /// Random traces per block (besides the example and the aimed traces).
 pub const TRACES_PER_BLOCK: usize = 20;
@@ -40,7 +49,8 @@ const SEED: u64 = 0x5EED_0000;
 /// One vector file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Vector {
-    /// The directory: the block's name, with the integer type for IEC counters (`CTUD-SINT`).
+    /// The directory: the block's name, with the integer type for IEC counters (`CTUD-SINT`)
+    /// and the data type for the IEC timers on LTIME (`TON-LTIME`).
     pub dir: String,
     /// The file name.
     pub file: String,
@@ -53,29 +63,44 @@ pub struct Vector {
 impl Vector {
     /// The `plc-timers check` command that replays it, from the vectors' directory.
     pub fn check_command(&self) -> String {
-        let ty = match self.spec.block.family() {
-            Family::IecCounter => format!(" --type {}", self.spec.int_type.name()),
-            _ => String::new(),
+        let block = self.spec.block();
+        let ty = if block.family() == Family::IecCounter
+            || self.spec.data_type() != block.default_data_type()
+        {
+            format!(" --type {}", self.spec.data_type())
+        } else {
+            String::new()
         };
-        format!(
-            "plc-timers check {}{ty} {}/{}",
-            self.spec.block, self.dir, self.file
-        )
+        format!("plc-timers check {block}{ty} {}/{}", self.dir, self.file)
     }
 }
 
 /// A trace under construction: rows of (t, the inputs at 1, preset text).
 struct Trace {
     block: Block,
+    /// `t_ms`, or `t_ns` on LTIME.
+    time_column: &'static str,
     rows: Vec<(u64, Signals, String)>,
 }
 
 impl Trace {
-    fn new(block: Block) -> Trace {
+    fn new(spec: BlockSpec) -> Trace {
         Trace {
-            block,
+            block: spec.block(),
+            time_column: spec.time_column(),
             rows: Vec::new(),
         }
+    }
+
+    /// The same trace on LTIME: every TIME preset read as as many nanoseconds as it has
+    /// milliseconds (`T#20MS` as `LT#20NS`), the times unchanged (LTIMER-SAME-01).
+    fn in_nanoseconds(mut self) -> Trace {
+        for (_, _, preset) in &mut self.rows {
+            if let Ok(t) = preset.parse::<Time>() {
+                *preset = format!("LT#{}NS", t.as_millis());
+            }
+        }
+        self
     }
 
     /// Adds a row with the inputs and coils `on` at 1 (those the block has; the others are not
@@ -84,7 +109,7 @@ impl Trace {
         self.rows.push((t, Signals::of(on), preset.to_string()));
     }
 
-    /// The CSV text: `t_ms` (timers), the inputs, then a column for each coil (`RT`) that
+    /// The CSV text: the time column (timers), the inputs, then a column for each coil (`RT`) that
     /// some row sets: a trace that uses no coil has the box's columns only.
     fn text(&self) -> String {
         let timed = self.block.requires_time();
@@ -97,7 +122,7 @@ impl Trace {
             .collect();
         let mut names: Vec<&str> = Vec::new();
         if timed {
-            names.push(TIME_COLUMN);
+            names.push(self.time_column);
         }
         names.extend(self.block.inputs().iter().chain(&coils).map(|p| p.name()));
         let mut text = names.join(",");
@@ -120,10 +145,59 @@ impl Trace {
     }
 }
 
+/// The smallest and the largest preset `spec`'s block takes: the range its preset parser
+/// accepts (an IEC counter's PV: its integer type's), found by bisection so that the one list
+/// of the types and their ranges stays the core's.
+fn limits_of(spec: BlockSpec) -> (i128, i128) {
+    struct Limits;
+    impl Visit for Limits {
+        type Out = (i128, i128);
+        fn visit<B: BlockOps>(self, _: B, _: B::Kind) -> (i128, i128) {
+            let ok = |v: i128| parse_preset::<B>(&v.to_string()).is_ok();
+            // The last value for which `ok` holds, from `inside` (where it holds) towards
+            // `outside` (where it does not).
+            let edge = |mut inside: i128, mut outside: i128| {
+                while inside.abs_diff(outside) > 1 {
+                    let mid = inside + (outside - inside) / 2;
+                    if ok(mid) {
+                        inside = mid;
+                    } else {
+                        outside = mid;
+                    }
+                }
+                inside
+            };
+            (edge(0, -(1 << 100)), edge(0, 1 << 100))
+        }
+    }
+    spec.visit(Limits)
+}
+
 /// Presets at edge values, and the time steps around ticks and presets, per preset kind.
-fn presets_and_steps(kind: PresetKind, int_type: IntType) -> (Vec<String>, Vec<u64>) {
+fn presets_and_steps(kind: PresetKind, spec: BlockSpec) -> (Vec<String>, Vec<u64>) {
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
     match kind {
+        PresetKind::Time if spec.data_type() == DataType::LTime => (
+            s(&[
+                "LT#0NS",
+                "-5",
+                "LT#1NS",
+                "LT#30NS",
+                "LT#1MS_500US",
+                "LT#30D",
+            ]),
+            vec![
+                0,
+                1,
+                29,
+                30,
+                31,
+                100,
+                1_500_000,
+                THIRTY_DAYS_NS - 1,
+                THIRTY_DAYS_NS,
+            ],
+        ),
         PresetKind::S5Time => (
             s(&[
                 "S5T#0MS",
@@ -144,7 +218,7 @@ fn presets_and_steps(kind: PresetKind, int_type: IntType) -> (Vec<String>, Vec<u
             vec![1],
         ),
         PresetKind::Integer => {
-            let (min, max) = int_type.limits();
+            let (min, max) = limits_of(spec);
             let pvs = [0, 1, 3, -1, min, max, max - 1, min + 1]
                 .into_iter()
                 .filter(|v| (min..=max).contains(v))
@@ -155,20 +229,25 @@ fn presets_and_steps(kind: PresetKind, int_type: IntType) -> (Vec<String>, Vec<u
     }
 }
 
-/// The first time of a generated trace: IEC timers start 50 ms before the 32-bit clock wraps.
-fn start_time(kind: PresetKind) -> u64 {
-    if kind == PresetKind::Time {
+/// 30 days in nanoseconds: `LT#30D`, past TIME's range.
+const THIRTY_DAYS_NS: u64 = 30 * 86_400 * 1_000_000_000;
+
+/// The first time of a generated trace: IEC timers on TIME start 50 ms before the 32-bit clock
+/// wraps (on LTIME the trace's time is the clock, whose wrap at 2^64 ns no trace reaches).
+fn start_time(kind: PresetKind, spec: BlockSpec) -> u64 {
+    if kind == PresetKind::Time && spec.data_type() != DataType::LTime {
         (1 << 32) - 50
     } else {
         0
     }
 }
 
-fn random(block: Block, kind: PresetKind, int_type: IntType, rng: &mut fastrand::Rng) -> Trace {
-    let (presets, steps) = presets_and_steps(kind, int_type);
+fn random(spec: BlockSpec, kind: PresetKind, rng: &mut fastrand::Rng) -> Trace {
+    let block = spec.block();
+    let (presets, steps) = presets_and_steps(kind, spec);
     let preset = presets[rng.usize(..presets.len())].clone();
-    let mut trace = Trace::new(block);
-    let mut t = start_time(kind);
+    let mut trace = Trace::new(spec);
+    let mut t = start_time(kind, spec);
     let mut bits = 0u64;
     for _ in 0..ROWS {
         t += steps[rng.usize(..steps.len())];
@@ -197,13 +276,14 @@ fn changing_presets(kind: PresetKind) -> [&'static str; 4] {
     }
 }
 
-fn preset_change(block: Block, kind: PresetKind) -> Trace {
+fn preset_change(spec: BlockSpec, kind: PresetKind) -> Trace {
+    let block = spec.block();
     let p = changing_presets(kind);
-    let mut trace = Trace::new(block);
+    let mut trace = Trace::new(spec);
     if block.requires_time() {
         // The start input: S or IN; TONR's R resets at the end.
         let start = if block.has_input(S) { S } else { In };
-        let t0 = start_time(kind);
+        let t0 = start_time(kind, spec);
         let pattern: &[(u64, bool, usize)] = &[
             (0, false, 0),
             (10, true, 0),
@@ -260,8 +340,32 @@ fn preset_change(block: Block, kind: PresetKind) -> Trace {
     trace
 }
 
-fn long_gaps(block: Block) -> Trace {
-    let mut trace = Trace::new(block);
+/// Gaps past 2^62 and 2^63 ns on LTIME (LTIMER-CLOCK-01): each gap once, as the trace's time
+/// cannot pass 2^64 ns.
+fn long_gaps_ltime(spec: BlockSpec) -> Trace {
+    let mut trace = Trace::new(spec);
+    let mut t = 1_000u64;
+    let max = "LT#106751D_23H_47M_16S_854MS_775US_807NS";
+    for (pt, gap) in [
+        ("LT#30D", THIRTY_DAYS_NS - 1),
+        ("LT#30D", THIRTY_DAYS_NS),
+        ("LT#30D", THIRTY_DAYS_NS + 1),
+        ("LT#30D", 1 << 61),
+        (max, (1 << 62) + 1),
+        (max, (1 << 63) + 1),
+    ] {
+        trace.row(t, &[], pt);
+        trace.row(t + 1, &[In], pt);
+        trace.row(t + 1 + gap, &[In], pt);
+        trace.row(t + 2 + gap, &[], pt);
+        trace.row(t + 3 + gap, &[R], pt);
+        t += 5 + gap;
+    }
+    trace
+}
+
+fn long_gaps(spec: BlockSpec) -> Trace {
+    let mut trace = Trace::new(spec);
     let mut t = 1_000u64;
     for pt in ["T#10S", "T#24D_20H_31M_23S_647MS"] {
         for gap in [
@@ -287,10 +391,11 @@ fn long_gaps(block: Block) -> Trace {
 
 /// Rows that bring a counter to a known CV: (inputs, preset) pairs, each followed by a row
 /// with every input 0.
-fn setups(block: Block, int_type: IntType) -> Vec<(Vec<Port>, String)> {
+fn setups(spec: BlockSpec) -> Vec<(Vec<Port>, String)> {
+    let block = spec.block();
     match block.family() {
         Family::IecCounter => {
-            let (min, max) = int_type.limits();
+            let (min, max) = limits_of(spec);
             let mut v = Vec::new();
             if block.has_input(R) {
                 v.push((vec![R], "3".to_string()));
@@ -311,7 +416,8 @@ fn setups(block: Block, int_type: IntType) -> Vec<(Vec<Port>, String)> {
     }
 }
 
-fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
+fn simultaneous(spec: BlockSpec, kind: PresetKind) -> Trace {
+    let block = spec.block();
     let bools: Vec<Port> = block
         .inputs()
         .iter()
@@ -319,9 +425,9 @@ fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
         .filter(|p| p.kind() == ValueKind::Bool)
         .collect();
     let timer_preset = changing_presets(kind)[2];
-    let mut trace = Trace::new(block);
-    let mut t = start_time(kind);
-    for (setup, preset) in setups(block, int_type) {
+    let mut trace = Trace::new(spec);
+    let mut t = start_time(kind, spec);
+    for (setup, preset) in setups(spec) {
         let preset = if preset.is_empty() {
             timer_preset.to_string()
         } else {
@@ -343,8 +449,9 @@ fn simultaneous(block: Block, kind: PresetKind, int_type: IntType) -> Trace {
     trace
 }
 
-fn limits(block: Block, int_type: IntType) -> Trace {
-    let mut trace = Trace::new(block);
+fn limits(spec: BlockSpec) -> Trace {
+    let block = spec.block();
+    let mut trace = Trace::new(spec);
     // Counters only: their traces have no time column, so every row's time is 0.
     let mut row = |on: &[Port], preset: &str| trace.row(0, on, preset);
     match block.family() {
@@ -359,7 +466,7 @@ fn limits(block: Block, int_type: IntType) -> Trace {
             }
         }
         _ => {
-            let (min, max) = int_type.limits();
+            let (min, max) = limits_of(spec);
             for (load, count) in [(max - 1, Cu), (max, Cu), (min + 1, Cd), (min, Cd)] {
                 let pv = load.to_string();
                 row(&[Ld], &pv);
@@ -386,8 +493,9 @@ fn limits(block: Block, int_type: IntType) -> Trace {
     trace
 }
 
-fn fr(block: Block, kind: PresetKind) -> Trace {
-    let mut trace = Trace::new(block);
+fn fr(spec: BlockSpec, kind: PresetKind) -> Trace {
+    let block = spec.block();
+    let mut trace = Trace::new(spec);
     let preset = changing_presets(kind)[1];
     if block.requires_time() {
         let pattern: &[(u64, &[Port])] = &[
@@ -449,8 +557,9 @@ fn fr(block: Block, kind: PresetKind) -> Trace {
 
 /// The rows that pin the weighed decisions of `spec/` (see the module documentation); `None`
 /// for the S5 counters, whose decisions the other aimed traces already pin.
-fn decisions(block: Block) -> Option<Trace> {
-    let mut trace = Trace::new(block);
+fn decisions(spec: BlockSpec) -> Option<Trace> {
+    let block = spec.block();
+    let mut trace = Trace::new(spec);
     // (t_ms, inputs at 1, preset)
     let mut rows = |rows: &[(u64, &[Port], &str)]| {
         for &(t, on, preset) in rows {
@@ -721,11 +830,12 @@ fn reference(spec: BlockSpec, text: &str) -> Result<String, TraceError> {
     Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
-/// The example trace of `block` with its preset as a column (comments and blank lines dropped).
-fn example_with_preset(block: Block) -> Option<String> {
-    let example = examples::of(block)?;
-    let value = example.preset_text?;
-    let preset = block.preset().port.name();
+/// The example trace of `spec`'s instruction with its preset as a column (comments and blank
+/// lines dropped).
+fn example_with_preset(spec: BlockSpec) -> Option<String> {
+    let example = examples::of_instruction(spec.instruction)?;
+    let value = example.preset?;
+    let preset = spec.block().preset().port.name();
     let mut text = String::new();
     for line in example
         .text
@@ -739,44 +849,48 @@ fn example_with_preset(block: Block) -> Option<String> {
 }
 
 fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> {
-    let block = spec.block;
+    let block = spec.block();
     let kind = block.preset().kind;
-    let dir = match block.family() {
-        Family::IecCounter => format!("{block}-{}", spec.int_type.name()),
-        _ => block.name().to_string(),
+    let ltime = spec.data_type() == DataType::LTime;
+    let dir = if block.family() == Family::IecCounter || ltime {
+        format!("{block}-{}", spec.data_type())
+    } else {
+        block.name().to_string()
     };
+    // The TIME files' traces, read in nanoseconds on LTIME.
+    let time_based = |trace: Trace| if ltime { trace.in_nanoseconds() } else { trace };
     let mut traces: Vec<(String, String)> = Vec::new();
-    if spec.int_type == IntType::DEFAULT {
-        if let Some(text) = example_with_preset(block) {
-            traces.push(("example.csv".into(), text));
-        }
+    if let Some(text) = example_with_preset(spec) {
+        traces.push(("example.csv".into(), text));
     }
     let mut rng = fastrand::Rng::with_seed(seed);
     for k in 0..TRACES_PER_BLOCK {
         traces.push((
             format!("random-{k:02}.csv"),
-            random(block, kind, spec.int_type, &mut rng).text(),
+            random(spec, kind, &mut rng).text(),
         ));
     }
     traces.push((
         "preset-change.csv".into(),
-        preset_change(block, kind).text(),
+        time_based(preset_change(spec, kind)).text(),
     ));
-    if kind == PresetKind::Time {
-        traces.push(("long-gaps.csv".into(), long_gaps(block).text()));
+    if ltime {
+        traces.push(("long-gaps.csv".into(), long_gaps_ltime(spec).text()));
+    } else if kind == PresetKind::Time {
+        traces.push(("long-gaps.csv".into(), long_gaps(spec).text()));
     }
     if matches!(block.family(), Family::IecCounter | Family::S5Counter) {
-        traces.push(("limits.csv".into(), limits(block, spec.int_type).text()));
+        traces.push(("limits.csv".into(), limits(spec).text()));
     }
     traces.push((
         "simultaneous.csv".into(),
-        simultaneous(block, kind, spec.int_type).text(),
+        time_based(simultaneous(spec, kind)).text(),
     ));
     if block.has_input(Fr) {
-        traces.push(("fr.csv".into(), fr(block, kind).text()));
+        traces.push(("fr.csv".into(), fr(spec, kind).text()));
     }
-    if let Some(trace) = decisions(block) {
-        traces.push(("decisions.csv".into(), trace.text()));
+    if let Some(trace) = decisions(spec) {
+        traces.push(("decisions.csv".into(), time_based(trace).text()));
     }
     traces
         .into_iter()
@@ -791,19 +905,14 @@ fn block_vectors(spec: BlockSpec, seed: u64) -> Result<Vec<Vector>, TraceError> 
         .collect()
 }
 
-/// Every vector: each block of the catalog, and each integer type of the IEC counters.
+/// Every vector: each block of the catalog on each of its data types (the IEC counters' integer
+/// types, the IEC timers' TIME and LTIME).
 pub fn all() -> Result<Vec<Vector>, TraceError> {
     let mut v = Vec::new();
     for (i, block) in Block::ALL.into_iter().enumerate() {
-        let types: &[IntType] = match block.family() {
-            Family::IecCounter => &IntType::ALL,
-            _ => &[IntType::DEFAULT],
-        };
-        for (j, &ty) in types.iter().enumerate() {
-            let spec = BlockSpec {
-                int_type: ty,
-                ..BlockSpec::new(block)
-            };
+        for (j, &ty) in block.data_types().iter().enumerate() {
+            let spec = BlockSpec::typed(block, Some(ty))
+                .map_err(|e| TraceError::new(super::error::Location::Command, e))?;
             v.extend(block_vectors(spec, SEED + (i * 16 + j) as u64 + 1)?);
         }
     }
@@ -836,6 +945,8 @@ pub fn readme() -> String {
          Replay a file through your implementation, write the same columns, and compare with\n\
          \x20 plc-timers check BLOCK FILE          (add --type T for IEC counters)\n\
          which reports the first differing line and column, the rule that decides it, and the\n\
-         rows before it (exit status 1).\n"
+         rows before it (exit status 1). The LTIME timers' directories (TP-LTIME, TON-LTIME,\n\
+         TOF-LTIME, TONR-LTIME) take --type LTIME: their time column is t_ns, PT and ET are in\n\
+         nanoseconds.\n"
     )
 }

@@ -3,9 +3,7 @@
 
 use plc_timers::catalog::{Block, PresetKind};
 use plc_timers_trace::diagram::{self, Window};
-use plc_timers_trace::{
-    check, run, vcd, BlockSpec, Error, Implementation, Location, PresetValue, TraceError,
-};
+use plc_timers_trace::{check, run, vcd, BlockSpec, Error, Implementation, Location, TraceError};
 use proptest::prelude::*;
 
 fn ton() -> BlockSpec {
@@ -13,15 +11,12 @@ fn ton() -> BlockSpec {
 }
 
 /// `text` as TON's PT, read as the command line's parser reads `--pt`.
-fn pt(text: &str) -> Option<PresetValue> {
-    Some(PresetValue::parse(ton(), text).expect("a valid PT"))
+fn pt(text: &str) -> Option<&str> {
+    ton().preset_literal(text).expect("a valid PT");
+    Some(text)
 }
 
-fn run_str(
-    spec: BlockSpec,
-    input: &[u8],
-    preset: Option<PresetValue>,
-) -> Result<String, TraceError> {
+fn run_str(spec: BlockSpec, input: &[u8], preset: Option<&str>) -> Result<String, TraceError> {
     let mut out = Vec::new();
     match run(spec, preset, input, &mut out) {
         Ok(_) => Ok(String::from_utf8(out).expect("the runner writes UTF-8 for UTF-8 input")),
@@ -135,11 +130,11 @@ fn cli_err_located() {
 fn cli_err_preset_located() {
     let e = run_str(ton(), b"t_ms,IN,PT\n0,1,T#1S\n1,1,T#1X\n", None).expect_err("bad PT");
     assert_eq!(cell(&e), (3, 3));
-    let e = PresetValue::parse(ton(), "T#1X").expect_err("bad --pt");
-    assert!(!e.is_empty(), "{e}");
+    let e = run_str(ton(), b"t_ms,IN\n", Some("T#1X")).expect_err("bad --pt");
+    assert_eq!(e.location, Location::Option("pt"));
+    assert!(!e.message.is_empty(), "{e}");
     // A preset of another kind (a library caller's mistake) is located to the block's option.
-    let tv = PresetValue::parse(BlockSpec::new(Block::SOdt), "S5T#1S").ok();
-    let e = run_str(ton(), b"t_ms,IN\n", tv).expect_err("a TV for TON");
+    let e = run_str(ton(), b"t_ms,IN\n", Some("S5T#1S")).expect_err("a TV for TON");
     assert_eq!(e.location, Location::Option("pt"));
 }
 
@@ -270,7 +265,7 @@ fn rt_column_is_the_coil_before_the_call() {
     let e = run_str(ton(), b"t_ms,RT,IN,rt\n", pt("5")).expect_err("RT twice");
     assert!(e.message.contains("appears twice"), "{e}");
     let sd = BlockSpec::new(Block::SOdt);
-    let tv = Some(PresetValue::parse(sd, "S5T#20MS").expect("a TV"));
+    let tv = Some("S5T#20MS");
     let e = run_str(sd, b"t_ms,S,RT\n0,1,1\n", tv).expect_err("no RT on S_ODT");
     assert_eq!(
         e.to_string(),
@@ -368,7 +363,8 @@ proptest! {
                 PresetKind::Time => "T#5MS",
                 PresetKind::Integer | PresetKind::S5Count => "3",
             };
-            let presets = Some(PresetValue::parse(spec, text).expect("a valid preset"));
+            spec.preset_literal(text).expect("a valid preset");
+            let presets = Some(text);
             let reference = run_str(spec, &bytes, presets);
             let optimized = run_str(spec.with(Implementation::Optimized), &bytes, presets);
             prop_assert_eq!(&reference, &optimized, "{}", block);

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use plc_timers::catalog::{Block, ValueKind};
 use plc_timers_trace::diagram::{self, Stats, Window, COLUMNS, EXACT_ROWS};
-use plc_timers_trace::{engine, examples, vcd, BlockSpec, PresetValue};
+use plc_timers_trace::{engine, examples, vcd, BlockSpec};
 
 /// The repository's root, where `docs/` is.
 fn root() -> PathBuf {
@@ -18,20 +18,18 @@ fn root() -> PathBuf {
         .to_path_buf()
 }
 
-fn draw(
-    spec: BlockSpec,
-    preset: Option<PresetValue>,
-    trace: &[u8],
-    window: Window,
-) -> (String, Stats) {
+fn draw(spec: BlockSpec, preset: Option<&str>, trace: &[u8], window: Window) -> (String, Stats) {
     let mut out = Vec::new();
     let stats = diagram::svg(spec, preset, trace, window, &mut out).expect("draws");
     (String::from_utf8(out).expect("UTF-8"), stats)
 }
 
 /// `text` read as `block`'s preset, as the command line's parser reads it.
-fn preset(block: Block, text: &str) -> Option<PresetValue> {
-    Some(PresetValue::parse(BlockSpec::new(block), text).expect("a valid preset"))
+fn preset(block: Block, text: &'static str) -> Option<&'static str> {
+    BlockSpec::new(block)
+        .preset_literal(text)
+        .expect("a valid preset");
+    Some(text)
 }
 
 fn example_svg(e: &examples::Example) -> (String, Stats) {
@@ -49,7 +47,7 @@ fn docs_diagrams_are_current() {
         assert!(stats.exact);
         let bools = e
             .spec
-            .block
+            .block()
             .inputs()
             .iter()
             .filter(|p| p.kind() == plc_timers::catalog::ValueKind::Bool)
@@ -128,6 +126,34 @@ fn ton_q_rises_at_expiry_and_et_ramps() {
         b.1 < a.1 && (b.0 - x(2499.0)).abs() < 0.06,
         "and on to 2499: {et:?}"
     );
+}
+
+/// CLI-LTIME-03: the LTIME example's diagram has its time axis in ns, its title shows PT as
+/// its LTIME literal, and Q rises where ET reaches PT: 1 000 000 ns (the start) + 1 500 000 ns.
+#[test]
+fn ltime_diagram_in_nanoseconds() {
+    let ton = BlockSpec::typed(Block::Ton, Some(plc_timers::catalog::DataType::LTime))
+        .expect("TON takes LTIME");
+    let e = examples::of_instruction(ton.instruction).expect("the TON LTIME example");
+    let (svg, _) = example_svg(&e);
+    assert!(
+        svg.contains(">t [ns]</text>"),
+        "CLI-LTIME-03: the axis' unit"
+    );
+    assert!(
+        svg.contains(">TON, PT = LT#1MS_500US</text>"),
+        "CLI-LTIME-03: the title"
+    );
+    let t_last = 4_000_000.0;
+    let t_end = t_last + t_last * 0.08;
+    let x = |t: f64| (x_of(t, 0.0, t_end) * 10.0).round() / 10.0;
+    let q = polyline(&svg, "signal", "Q");
+    let step: Vec<&(f64, f64)> = q
+        .iter()
+        .filter(|p| (p.0 - x(2_500_000.0)).abs() < 0.06)
+        .collect();
+    assert_eq!(step.len(), 2, "CLI-LTIME-03: a step at 2 500 000 ns: {q:?}");
+    assert_ne!(step[0].1, step[1].1);
 }
 
 /// CLI-DIAG-01: an S5 timer's BI runs down one unit per tick of its own time base. S5T#20S is
@@ -393,7 +419,8 @@ fn exact_up_to_the_limit_then_buckets() {
     assert_eq!((stats.drawn, stats.bucket_ms), (100_001, 128));
 }
 
-/// CLI-VCD-01: the VCD of every example parses back with the `vcd` crate: a 1 ms timescale,
+/// CLI-VCD-01: the VCD of every example parses back with the `vcd` crate: a 1 ms timescale (1 ns
+/// on LTIME, CLI-LTIME-03),
 /// one variable per boolean input, the preset and each output, and the values of the run.
 #[test]
 fn vcd_parses_back() {
@@ -402,7 +429,11 @@ fn vcd_parses_back() {
         let rows = vcd::export(e.spec, e.preset, e.text.as_bytes(), &mut out).expect("exports");
         let mut parser = ::vcd::Parser::new(&out[..]);
         let header = parser.parse_header().expect("a VCD header");
-        assert_eq!(header.timescale, Some((1, ::vcd::TimescaleUnit::MS)));
+        let unit = match e.spec.time_column() {
+            "t_ns" => ::vcd::TimescaleUnit::NS,
+            _ => ::vcd::TimescaleUnit::MS,
+        };
+        assert_eq!(header.timescale, Some((1, unit)), "{}", e.stem);
         let module = match &header.items[0] {
             ::vcd::ScopeItem::Scope(s) => s,
             other => panic!("{other:?}"),
@@ -415,7 +446,7 @@ fn vcd_parses_back() {
                 _ => None,
             })
             .collect();
-        for port in e.spec.block.outputs() {
+        for port in e.spec.block().outputs() {
             assert!(
                 names.iter().any(|n| n == port.name()),
                 "{}: {names:?}",
@@ -464,7 +495,7 @@ fn vcd_parses_back() {
 /// timestamp exactly the values of the last row of that time in `run`'s output (an independent
 /// path: the CSV writer): every boolean input and every output, declared as a 1-bit wire
 /// (BOOL), a 16-bit reg (WORD) or a 64-bit integer (the rest), each change as wide as its
-/// declaration. TON's preset signal holds PT = 500.
+/// declaration. TON's preset signal holds PT = 500 (1 500 000 on LTIME, in ns).
 #[test]
 fn vcd_agrees_with_run() {
     use ::vcd::{Command, IdCode, Value as Bit, VarType};
@@ -481,11 +512,12 @@ fn vcd_agrees_with_run() {
             .split(',')
             .map(str::to_ascii_uppercase)
             .collect();
-        let t_col = header.iter().position(|h| h == "T_MS");
+        let time = e.spec.time_column().to_ascii_uppercase();
+        let t_col = header.iter().position(|h| *h == time);
         let mut rows: Vec<(u64, Vec<String>)> = Vec::new();
         for (i, line) in lines.enumerate() {
             let cells: Vec<String> = line.split(',').map(str::to_string).collect();
-            let t = t_col.map_or(i as u64, |c| cells[c].parse().expect("t_ms"));
+            let t = t_col.map_or(i as u64, |c| cells[c].parse().expect("a time"));
             match rows.last_mut() {
                 Some(last) if last.0 == t => last.1 = cells,
                 _ => rows.push((t, cells)),
@@ -536,7 +568,7 @@ fn vcd_agrees_with_run() {
             "{}: one timestamp per time of the trace",
             e.stem
         );
-        let block = e.spec.block;
+        let block = e.spec.block();
         let mut checked = 0;
         for ((t, vals), (_, cells)) in at.iter().zip(&rows) {
             for (id, (ty, size, name)) in &declared {
@@ -558,7 +590,13 @@ fn vcd_agrees_with_run() {
                 assert_eq!((*ty, *size), expected_decl, "{}: {name}", e.stem);
                 let Some(col) = header.iter().position(|h| *h == name.to_ascii_uppercase()) else {
                     if block.preset().port.name() == name.as_str() && block == Block::Ton {
-                        assert_eq!(vals.get(id), Some(&500), "TON: PT at {t}");
+                        // T#500ms = 500 ms; LT#1MS500US = 1 500 000 ns.
+                        let pt = if e.spec.time_column() == "t_ns" {
+                            1_500_000
+                        } else {
+                            500
+                        };
+                        assert_eq!(vals.get(id), Some(&pt), "{}: PT at {t}", e.stem);
                     }
                     continue;
                 };

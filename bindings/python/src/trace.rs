@@ -6,11 +6,11 @@
 
 use std::io::Cursor;
 
-use plc_timers::catalog::{Block, DataType, Kind, PresetKind, ValueKind};
+use plc_timers::catalog::{Block, Kind, ValueKind};
 use plc_timers::rule::RuleSet;
 use plc_timers_trace::{
     self as engine, parse_value, preset_option, show, BlockSpec, Error, Implementation, Location,
-    PresetValue, Value,
+    Value,
 };
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
@@ -136,28 +136,12 @@ fn push_field(out: &mut String, text: &str) {
 /// A preset given as a Python value (not a literal's text), read by the reader the block
 /// classes use for it: one rule for `TON(pt=…)`, `run("TON", …, pt=…)` and a `PT` cell, so a
 /// value of another literal type (a `CounterPreset` as PT, a `Time` as PV) is a `TypeError`
-/// there as here, and an int is a word (TV), milliseconds (PT) or a count (PV) everywhere.
-fn typed_preset(spec: BlockSpec, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<PresetValue> {
-    match spec.block.preset().kind {
-        PresetKind::S5Time => args::s5time(obj, name).map(PresetValue::S5Time),
-        PresetKind::Time => args::time(obj, name).map(PresetValue::Time),
-        PresetKind::Integer => {
-            // The trace's integer types are the catalog's, by name.
-            let t = DataType::lookup(spec.int_type.name()).unwrap_or(DataType::Int);
-            args::int_preset(obj, t, name).map(PresetValue::Integer)
-        }
-        PresetKind::S5Count => args::counter_preset(obj, name).map(PresetValue::S5Count),
-    }
-}
-
-/// A preset as the text of a trace cell, which the engine reads back to the same value.
-fn preset_cell(value: PresetValue) -> String {
-    match value {
-        PresetValue::S5Time(t) => format!("W#16#{:04X}", t.to_word()),
-        PresetValue::Time(t) => t.as_millis().to_string(),
-        PresetValue::Integer(i) => i.to_string(),
-        PresetValue::S5Count(p) => format!("C#{}", p.value()),
-    }
+/// there as here, and an int is a word (TV), milliseconds (PT; nanoseconds on LTIME) or a count
+/// (PV) everywhere. Returns the preset as the text of a trace cell, which the engine reads back
+/// to the same value.
+fn typed_preset(spec: BlockSpec, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<String> {
+    let t = spec.data_type();
+    args::preset(obj, t, name).map(|v| args::preset_text(t, v))
 }
 
 /// A cell's text: a bool as 1/0, an int in decimal, a str as it is, an `S5Time` as its word, a
@@ -171,10 +155,10 @@ fn cell_text(
     column: (usize, &str),
 ) -> PyResult<String> {
     let bad = |what: String| Err(input_error(py, line, Some(column), what));
-    let preset = spec.block.preset();
+    let preset = spec.block().preset();
     if column.1.trim() == preset.port.name() && !obj.is_instance_of::<PyString>() {
         return match typed_preset(spec, obj, column.1.trim()) {
-            Ok(v) => Ok(preset_cell(v)),
+            Ok(v) => Ok(v),
             // The reader's text says what is allowed; the error says where.
             Err(e) => bad(e.value(py).to_string()),
         };
@@ -365,7 +349,7 @@ fn csv_of(
 /// The block spec and the preset, read as the command line reads its options.
 struct Request {
     spec: BlockSpec,
-    preset: Option<PresetValue>,
+    preset: Option<String>,
 }
 
 impl Request {
@@ -407,8 +391,8 @@ fn preset_value(
     spec: BlockSpec,
     name: &'static str,
     obj: &Bound<'_, PyAny>,
-) -> PyResult<PresetValue> {
-    let block = spec.block;
+) -> PyResult<String> {
+    let block = spec.block();
     let preset = block.preset();
     if name != preset_option(block) {
         return Err(engine_error(
@@ -436,16 +420,17 @@ fn preset_value(
             trace_exception(py, text, &message, None, None, None, Some(name))
         });
     };
-    let text = text.to_cow()?;
-    PresetValue::parse(spec, &text).map_err(|e| {
-        engine_error(
+    let text = text.to_cow()?.into_owned();
+    match spec.preset_literal(&text) {
+        Ok(_) => Ok(text),
+        Err(e) => Err(engine_error(
             py,
             engine::TraceError::new(
                 Location::Option(preset_option(block)),
                 format!("`{}`: {e}", show(text.as_bytes())),
             ),
-        )
-    })
+        )),
+    }
 }
 
 /// A value of the trace format as a Python object: bool, int, or int (a word).
@@ -496,7 +481,7 @@ fn run(
     let mut out = Vec::with_capacity(csv.len() * 2);
     let result = engine::run(
         request.spec,
-        request.preset,
+        request.preset.as_deref(),
         Cursor::new(csv.as_bytes()),
         &mut out,
     );
@@ -507,7 +492,7 @@ fn run(
     }
     // Each output line is the row as given, then the outputs: the last fields of the line
     // (an output never holds a comma; the row's own fields may, quoted).
-    let ports = request.spec.block.outputs();
+    let ports = request.spec.block().outputs();
     let list = PyList::empty(py);
     let text = String::from_utf8_lossy(&out);
     for line in text.lines().skip(1) {
@@ -620,7 +605,7 @@ fn check(
         .map(|o| o.iter().map(String::as_str).collect());
     let report = engine::check(
         request.spec,
-        request.preset,
+        request.preset.as_deref(),
         names.as_deref(),
         Cursor::new(csv.as_bytes()),
     )
@@ -630,7 +615,7 @@ fn check(
     };
     let kind = request
         .spec
-        .block
+        .block()
         .outputs()
         .iter()
         .find(|p| p.name() == d.output)
