@@ -1472,13 +1472,39 @@ pub fn prop_struct(state: IecState<u32>) {
 #[cfg(not(kani))]
 #[test]
 fn exhaustive_u4_iec_rules() {
-    iec_rules_u4::<Time>();
-    iec_rules_u4::<LTime>();
+    // Each data type's run reaches every rule and cover of its own.
+    for hits in [iec_rules_u4::<Time>(), iec_rules_u4::<LTime>()] {
+        crate::cover::require_checked(
+            &[
+                "IEC-START-01",
+                "IEC-EDGE-01",
+                "IEC-PT-LATCH-01",
+                "IEC-EXPIRY-01",
+                "IEC-ET-RANGE-01",
+                "IEC-PT0-01",
+                "IEC-WRAP-01",
+                "IEC-ACCESS-01",
+                "TP-IN-01",
+                "TP-RETRIGGER-01",
+                "TON-IN-01",
+                "TOF-IN-01",
+                "TONR-IN-01",
+                "TONR-RESUME-01",
+                "TONR-R-01",
+                "IEC-RT-01",
+                "IEC-PT-COIL-01",
+                "IEC-RETAIN-01",
+            ],
+            &hits,
+        );
+        crate::cover::require(hits);
+    }
 }
 
-/// The body of [`exhaustive_u4_iec_rules`] for the data type `D`.
+/// The body of [`exhaustive_u4_iec_rules`] for the data type `D`: what its covers and checks
+/// recorded.
 #[cfg(not(kani))]
-fn iec_rules_u4<D: IecDuration>() {
+fn iec_rules_u4<D: IecDuration>() -> crate::cover::Hits {
     let states: Vec<IecState<U4>> = all_states_u4()
         .into_iter()
         .filter(|s| [0, 1, 2, 5, 14, 15].contains(&s.pt.0))
@@ -1510,31 +1536,8 @@ fn iec_rules_u4<D: IecDuration>() {
     });
     let n: u64 = hits.iter().map(|(n, _)| n).sum();
     let hits = crate::cover::merge(hits.into_iter().map(|(_, h)| h));
-    crate::cover::require_checked(
-        &[
-            "IEC-START-01",
-            "IEC-EDGE-01",
-            "IEC-PT-LATCH-01",
-            "IEC-EXPIRY-01",
-            "IEC-ET-RANGE-01",
-            "IEC-PT0-01",
-            "IEC-WRAP-01",
-            "IEC-ACCESS-01",
-            "TP-IN-01",
-            "TP-RETRIGGER-01",
-            "TON-IN-01",
-            "TOF-IN-01",
-            "TONR-IN-01",
-            "TONR-RESUME-01",
-            "TONR-R-01",
-            "IEC-RT-01",
-            "IEC-PT-COIL-01",
-            "IEC-RETAIN-01",
-        ],
-        &hits,
-    );
-    crate::cover::require(hits);
     check_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
+    hits
 }
 
 /// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_ton_rules`; here
@@ -1544,39 +1547,39 @@ fn iec_rules_u4<D: IecDuration>() {
 #[cfg(not(kani))]
 #[test]
 fn exhaustive_u8_wrap_rules() {
-    wrap_rules_u8::<Time>();
-    wrap_rules_u8::<LTime>();
+    // Each data type's run reaches both rules and every cover of its own.
+    for run in [wrap_rules_u8::<Time> as fn(), wrap_rules_u8::<LTime>] {
+        crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], run);
+    }
 }
 
 /// The body of [`exhaustive_u8_wrap_rules`] for the data type `D`.
 #[cfg(not(kani))]
 fn wrap_rules_u8<D: IecDuration>() {
-    crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], || {
-        for kind in IecKind::ALL {
-            let input = kind != IecKind::Tof;
-            for start in (0..=255u8).step_by(3) {
-                for pt in [0u8, 1, 2, 127, 128, 200, 254, 255] {
-                    let st = IecState {
-                        kind: Some(kind),
-                        input,
-                        running: true,
-                        start,
-                        pt,
-                        et: 0,
-                        q: q_while(kind),
-                    };
-                    for now in 0..=511u64 {
-                        let op = Op::Call(
-                            kind,
-                            CpuTime::from_ticks(now),
-                            IecInput::new(input, preset_of::<D>(9)),
-                        );
-                        check!(prop_iec_rules::<u8, D, AllKindCovers>(st, op));
-                    }
+    for kind in IecKind::ALL {
+        let input = kind != IecKind::Tof;
+        for start in (0..=255u8).step_by(3) {
+            for pt in [0u8, 1, 2, 127, 128, 200, 254, 255] {
+                let st = IecState {
+                    kind: Some(kind),
+                    input,
+                    running: true,
+                    start,
+                    pt,
+                    et: 0,
+                    q: q_while(kind),
+                };
+                for now in 0..=511u64 {
+                    let op = Op::Call(
+                        kind,
+                        CpuTime::from_ticks(now),
+                        IecInput::new(input, preset_of::<D>(9)),
+                    );
+                    check!(prop_iec_rules::<u8, D, AllKindCovers>(st, op));
                 }
             }
         }
-    });
+    }
 }
 
 /// `op` moved to `before` clock units (ms or ns) before PT (at least 0 after START) when it is a
@@ -1616,7 +1619,7 @@ impl FullWidth for LTime {
 }
 
 /// `st` with PT and ET within the range of `D` (a latched preset is a non-negative `D`).
-fn within_range<D: IecDuration>(st: IecState<D::Clock>) -> IecState<D::Clock> {
+pub fn within_range<D: IecDuration>(st: IecState<D::Clock>) -> IecState<D::Clock> {
     let top = <D::Clock as ClockWord>::from_u64_wrapping(D::MAX.units());
     IecState {
         pt: st.pt.min(top),
@@ -1775,16 +1778,14 @@ fn wrap_gap_boundaries() {
 
 /// IEC-EQUIV-02 over three operations from power-up, the body of the harnesses of both data
 /// types on their full-width clocks.
-fn sequence_equivalence_harness<D: FullWidth>(name: &str)
+fn sequence_equivalence_harness<D: FullWidth>()
 where
     Op<D>: bolero::TypeGenerator,
 {
-    crate::cover::harness(name, || {
-        bolero::check!()
-            .with_type::<[Op<D>; 3]>()
-            .with_iterations(20_000)
-            .for_each(|ops| prop_sequence_equivalence::<D::Clock, D>(ops));
-    });
+    bolero::check!()
+        .with_type::<[Op<D>; 3]>()
+        .with_iterations(20_000)
+        .for_each(|ops| prop_sequence_equivalence::<D::Clock, D>(ops));
 }
 
 /// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock (`TIME`). Symbolic: the
@@ -1793,11 +1794,10 @@ where
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_sequence_equivalence() {
-    sequence_equivalence_harness::<Time>(concat!(
-        module_path!(),
-        "::",
-        stringify!(kani_sequence_equivalence)
-    ));
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_sequence_equivalence)),
+        sequence_equivalence_harness::<Time>,
+    );
 }
 
 /// IEC-EQUIV-02 over three operations from power-up on the 64-bit nanosecond clock (`LTIME`,
@@ -1806,34 +1806,33 @@ fn kani_sequence_equivalence() {
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_ltimer_sequence_equivalence() {
-    sequence_equivalence_harness::<LTime>(concat!(
-        module_path!(),
-        "::",
-        stringify!(kani_ltimer_sequence_equivalence)
-    ));
+    crate::cover::harness(
+        concat!(
+            module_path!(),
+            "::",
+            stringify!(kani_ltimer_sequence_equivalence)
+        ),
+        sequence_equivalence_harness::<LTime>,
+    );
 }
 
 /// IEC-STRUCT-01 one step, the body of the harnesses of both data types on their full-width
 /// clocks: the state (PT and ET within the data type's range) and the operation.
-fn step_equivalence_harness<D: FullWidth>(name: &str)
+fn step_equivalence_harness<D: FullWidth>()
 where
     (IecState<D::Clock>, Op<D>): bolero::TypeGenerator,
 {
-    crate::cover::harness(name, || {
-        crate::cover::check_ids(&["IEC-STRUCT-01"], || {
-            bolero::check!()
-                .with_type::<(IecState<D::Clock>, Op<D>)>()
-                .with_iterations(20_000)
-                .for_each(|&(st, op)| {
-                    let st = within_range::<D>(st);
-                    prop_step_equivalence(st, op);
-                    prop_invariants(st, op);
-                    if let Op::Call(kind, now, input) = op {
-                        prop_table_8_20(st, kind, now, input, preset_of::<D>(7));
-                    }
-                });
+    bolero::check!()
+        .with_type::<(IecState<D::Clock>, Op<D>)>()
+        .with_iterations(20_000)
+        .for_each(|&(st, op)| {
+            let st = within_range::<D>(st);
+            prop_step_equivalence(st, op);
+            prop_invariants(st, op);
+            if let Op::Call(kind, now, input) = op {
+                prop_table_8_20(st, kind, now, input, preset_of::<D>(7));
+            }
         });
-    });
 }
 
 /// IEC-STRUCT-01 one step on the 32-bit clock (`TIME`). Symbolic: the state (PT and ET within
@@ -1841,11 +1840,10 @@ where
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
-    step_equivalence_harness::<Time>(concat!(
-        module_path!(),
-        "::",
-        stringify!(kani_step_equivalence)
-    ));
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_step_equivalence)),
+        || crate::cover::check_ids(&["IEC-STRUCT-01"], step_equivalence_harness::<Time>),
+    );
 }
 
 /// IEC-STRUCT-01 one step on the 64-bit nanosecond clock (`LTIME`, `IEC_LTIMER`). Symbolic: the
@@ -1853,11 +1851,14 @@ fn kani_step_equivalence() {
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_ltimer_step_equivalence() {
-    step_equivalence_harness::<LTime>(concat!(
-        module_path!(),
-        "::",
-        stringify!(kani_ltimer_step_equivalence)
-    ));
+    crate::cover::harness(
+        concat!(
+            module_path!(),
+            "::",
+            stringify!(kani_ltimer_step_equivalence)
+        ),
+        || crate::cover::check_ids(&["IEC-STRUCT-01"], step_equivalence_harness::<LTime>),
+    );
 }
 
 /// IEC-STRUCT-01 (the array form): `ton_array` on 2 structures over 3 scans against 2
