@@ -1,10 +1,23 @@
 //! The small-scope domains the drivers of several modules share (the counters' rule and
 //! equivalence drivers in `counter.rs`, their explanation drivers in `explain.rs`), each written
-//! once: a state is its data word(s) times every combination of its edge memories, an input
-//! every combination of its boolean inputs with the preset.
+//! once, and the S5 timers' inputs (their drivers in `s5.rs`, `explain.rs`, `decisions.rs`): a
+//! state is its data word(s) times every combination of its edge memories, an input every
+//! combination of its boolean inputs with the preset.
 
 use plc_timers::counter::s5::{CounterPreset, S5CounterInput, S5CounterState};
 use plc_timers::counter::{CounterInput, CounterInt, CounterState};
+use plc_timers::s5::S5Input;
+use plc_timers::time::S5Time;
+
+/// The 8 S5 timer inputs with the time value `tv`: every combination of S, R and FR.
+pub fn s5_timer_inputs(tv: S5Time) -> [S5Input; 8] {
+    core::array::from_fn(|bits| S5Input {
+        s: bits & 1 != 0,
+        r: bits & 2 != 0,
+        fr: bits & 4 != 0,
+        tv,
+    })
+}
 
 /// Every IEC counter state with CV in `cvs`: each CV with the 4 combinations of the CU and CD
 /// edge memories.
