@@ -2007,10 +2007,12 @@ fn kani_ltimer_struct() {
     crate::cover::harness(
         concat!(module_path!(), "::", stringify!(kani_ltimer_struct)),
         || {
-            bolero::check!()
-                .with_type::<IecState<u64>>()
-                .with_iterations(20_000)
-                .for_each(|&st| ltimer_struct_01(st));
+            crate::cover::check_ids(&["LTIMER-STRUCT-01"], || {
+                bolero::check!()
+                    .with_type::<IecState<u64>>()
+                    .with_iterations(20_000)
+                    .for_each(|&st| ltimer_struct_01(st));
+            });
         },
     );
 }
@@ -2089,7 +2091,7 @@ fn kani_ltimer_clock() {
 #[cfg(not(kani))]
 #[test]
 fn ltimer_clock_boundaries() {
-    crate::cover::check_covers(|| {
+    crate::cover::check_ids(&["LTIMER-CLOCK-01"], || {
         for t0 in [0, 12_345, u64::MAX - 1, u64::MAX] {
             for gap in [0, 1, (1 << 63) - 1, 1 << 63, u64::MAX - 1, u64::MAX] {
                 for pt in [-1, 0, 1, i64::MAX - 1, i64::MAX] {
@@ -2209,7 +2211,7 @@ pub fn ltimer_same_01(ops: &[Op<Time>]) {
 #[test]
 fn exhaustive_ltimer_same() {
     let alphabet = sequence_ops_u4::<Time>();
-    let n = crate::cover::check_covers(|| {
+    let n = crate::cover::check_ids(&["LTIMER-SAME-01"], || {
         let mut n = 0u64;
         for &a in &alphabet {
             for &b in &alphabet {
