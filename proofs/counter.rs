@@ -8,6 +8,7 @@
 //! harnesses the wide types.
 
 use crate::cover::{check, check_eq};
+use crate::domain::{counter_inputs, counter_states, s5_counter_inputs, s5_counter_states};
 use plc_timers::counter::s5::{
     CounterMemory, CounterPreset, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps,
     S5CounterRef, S5CounterState, CV_MAX,
@@ -103,31 +104,12 @@ pub fn prop_rules<T: CounterInt>(
     );
 }
 
-fn all_states<T: CounterInt>(
-    values: impl Iterator<Item = T> + Clone,
-) -> impl Iterator<Item = CounterState<T>> {
-    values.flat_map(|cv| {
-        (0..4u8).map(move |e| CounterState {
-            cv,
-            cu_prev: e & 1 != 0,
-            cd_prev: e & 2 != 0,
-        })
-    })
-}
-
 fn exhaustive_8bit<T: CounterInt>(values: impl Iterator<Item = T> + Clone) -> u64 {
     let mut n = 0;
     for kind in CounterKind::ALL {
-        for state in all_states(values.clone()) {
+        for state in counter_states(values.clone()) {
             for pv in values.clone() {
-                for bits in 0..16u8 {
-                    let input = CounterInput {
-                        cu: bits & 1 != 0,
-                        cd: bits & 2 != 0,
-                        r: bits & 4 != 0,
-                        ld: bits & 8 != 0,
-                        pv,
-                    };
+                for input in counter_inputs(pv) {
                     prop_step_equivalence(kind, state, input);
                     prop_rules(kind, state, input);
                     n += 1;
@@ -436,28 +418,11 @@ fn exhaustive_s5_counters() {
         .filter_map(|n| CounterPreset::new(n).ok())
         .collect();
     for kind in S5CounterKind::ALL {
-        for cv in 0..=CV_MAX {
-            for e in 0..16u8 {
-                let state = S5CounterState {
-                    cv,
-                    cu_prev: e & 1 != 0,
-                    cd_prev: e & 2 != 0,
-                    s_prev: e & 4 != 0,
-                    fr_prev: e & 8 != 0,
-                };
-                for &pv in &presets {
-                    for bits in 0..32u8 {
-                        let input = S5CounterInput {
-                            cu: bits & 1 != 0,
-                            cd: bits & 2 != 0,
-                            s: bits & 4 != 0,
-                            r: bits & 8 != 0,
-                            fr: bits & 16 != 0,
-                            pv,
-                        };
-                        checked += u32::from(prop_s5_step_equivalence(kind, state, input));
-                        checked += u32::from(prop_s5_rules(kind, state, input));
-                    }
+        for state in s5_counter_states(0..=CV_MAX) {
+            for &pv in &presets {
+                for input in s5_counter_inputs(pv) {
+                    checked += u32::from(prop_s5_step_equivalence(kind, state, input));
+                    checked += u32::from(prop_s5_rules(kind, state, input));
                 }
             }
         }
@@ -873,44 +838,24 @@ fn exhaustive_counter_rules_8bit() {
         ],
         || {
             for kind in CounterKind::ALL {
-                for e in 0..4u8 {
-                    for bits in 0..16u8 {
-                        for cv in i8::MIN..=i8::MAX {
-                            for pv in [i8::MIN, -1, 0, 1, i8::MAX] {
-                                let st = CounterState {
-                                    cv,
-                                    cu_prev: e & 1 != 0,
-                                    cd_prev: e & 2 != 0,
-                                };
-                                let i = CounterInput {
-                                    cu: bits & 1 != 0,
-                                    cd: bits & 2 != 0,
-                                    r: bits & 4 != 0,
-                                    ld: bits & 8 != 0,
-                                    pv,
-                                };
-                                prop_iec_counter_rules(kind, st, i);
-                                let ust = CounterState {
-                                    cv: cv as u8,
-                                    ..CounterState::default()
-                                };
-                                let ust = CounterState {
-                                    cu_prev: st.cu_prev,
-                                    cd_prev: st.cd_prev,
-                                    ..ust
-                                };
-                                prop_iec_counter_rules(
-                                    kind,
-                                    ust,
-                                    CounterInput {
-                                        cu: i.cu,
-                                        cd: i.cd,
-                                        r: i.r,
-                                        ld: i.ld,
-                                        pv: pv as u8,
-                                    },
-                                );
-                            }
+                for st in counter_states(i8::MIN..=i8::MAX) {
+                    for pv in [i8::MIN, -1, 0, 1, i8::MAX] {
+                        for i in counter_inputs(pv) {
+                            prop_iec_counter_rules(kind, st, i);
+                            // The same bits as USInt: the unsigned saturation ends.
+                            let ust = CounterState {
+                                cv: st.cv as u8,
+                                cu_prev: st.cu_prev,
+                                cd_prev: st.cd_prev,
+                            };
+                            let ui = CounterInput {
+                                cu: i.cu,
+                                cd: i.cd,
+                                r: i.r,
+                                ld: i.ld,
+                                pv: pv as u8,
+                            };
+                            prop_iec_counter_rules(kind, ust, ui);
                         }
                     }
                 }
@@ -1231,27 +1176,11 @@ fn exhaustive_s5_counter_rules() {
         || {
             let mut n = 0u32;
             for kind in S5CounterKind::ALL {
-                for cv in [0, 1, 2, 500, 997, 998, 999] {
-                    for e in 0..16u8 {
-                        let st = S5CounterState {
-                            cv,
-                            cu_prev: e & 1 != 0,
-                            cd_prev: e & 2 != 0,
-                            s_prev: e & 4 != 0,
-                            fr_prev: e & 8 != 0,
-                        };
-                        for bits in 0..32u8 {
-                            for pv in [0, 1, 998, 999] {
-                                let i = S5CounterInput {
-                                    cu: bits & 1 != 0,
-                                    cd: bits & 2 != 0,
-                                    s: bits & 4 != 0,
-                                    r: bits & 8 != 0,
-                                    fr: bits & 16 != 0,
-                                    pv: CounterPreset::new(pv).expect("<= 999"),
-                                };
-                                n += u32::from(prop_s5_counter_rules(kind, st, i));
-                            }
+                for st in s5_counter_states([0, 1, 2, 500, 997, 998, 999].into_iter()) {
+                    for pv in [0, 1, 998, 999] {
+                        let pv = CounterPreset::new(pv).expect("<= 999");
+                        for i in s5_counter_inputs(pv) {
+                            n += u32::from(prop_s5_counter_rules(kind, st, i));
                         }
                     }
                 }

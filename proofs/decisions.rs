@@ -6,6 +6,7 @@
 use crate::cover::{check, check_eq};
 #[cfg(not(kani))]
 use crate::cover::{check_ids, cover, covers};
+use crate::domain::s5_timer_inputs;
 
 use plc_timers::counter::s5::{
     CounterMemory, S5Counter, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
@@ -91,12 +92,7 @@ fn exhaustive_tv_latched() {
                     for bits in 0..8u8 {
                         for &tv in &tvs {
                             for &other in tvs.iter().filter(|&&o| o != tv) {
-                                let input = S5Input {
-                                    s: bits & 1 != 0,
-                                    r: bits & 2 != 0,
-                                    fr: bits & 4 != 0,
-                                    tv,
-                                };
+                                let input = s5_timer_inputs(tv)[usize::from(bits)];
                                 let hit = prop_tv_latched(kind, state, ticks, input, other);
                                 cover!(hit, "S5TMR-TV-01: TV changed while running, no start");
                                 latched += u64::from(hit);

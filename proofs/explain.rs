@@ -23,20 +23,24 @@
 use std::fmt::Debug;
 use std::thread;
 
+use plc_timers::block::Now;
 use plc_timers::counter::s5::{
     CounterMemory, CounterPreset, S5CounterInput, S5CounterKind, S5CounterOps, S5CounterRef,
     S5CounterState, CV_MAX,
 };
-use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterOps, CounterRef};
+use plc_timers::counter::{CounterInput, CounterInt, CounterKind, CounterRef};
 use plc_timers::counter::{CounterOutput, CounterState};
 use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOps, IecTimerRef};
 use plc_timers::rule::{Explained, Rule, RuleSet};
-use plc_timers::s5::{S5Input, S5Kind, S5State, S5TimerOps, S5TimerRef, TimerMemory, TimerWord};
+use plc_timers::s5::{S5Kind, S5State, S5TimerOps, S5TimerRef, TimerMemory, TimerWord};
 use plc_timers::time::clock::ClockWord;
-use plc_timers::time::{CpuTime, Time, TimeBase};
+use plc_timers::time::{CpuTime, IecDuration, LTime, Time, TimeBase};
 
 use crate::cover::{check, cover, covers};
-use crate::iec::{all_states_u4, U4};
+use crate::domain::{
+    counter_inputs, counter_states, s5_counter_inputs, s5_counter_states, s5_timer_inputs,
+};
+use crate::iec::{all_states_u4, within_range, FullWidth, U4};
 #[cfg(not(kani))]
 use crate::s5::near_expiry;
 use crate::s5::{seen, S5Case};
@@ -113,6 +117,26 @@ fn determined<O: Debug>(
         rule.id(),
         e.outputs[o]
     );
+}
+
+/// Faithful, for every family at once (written against [`BlockOps`]): from `start`, the
+/// explained call gives the outputs of the plain call and leaves the same block. `id` is the
+/// family's equivalence requirement, which leads the messages. Returns the explanation and the
+/// block after the call.
+fn faithful<B: plc_timers::block::BlockOps + Copy + PartialEq + Debug>(
+    start: B,
+    kind: B::Kind,
+    now: Now<B>,
+    input: B::Input,
+    id: &str,
+    case: &dyn Debug,
+) -> (Explained<B::Output>, B) {
+    let (mut plain, mut explained) = (start, start);
+    let out = plain.call(kind, now, input);
+    let e = explained.call_explained(kind, now, input);
+    assert_eq!(e.output, out, "{id}: explained outputs {case:?}");
+    assert_eq!(explained, plain, "{id}: explained state {case:?}");
+    (e, plain)
 }
 
 /// Runs `body` on each of the two halves of `kinds`, one thread each, requires every cover the
@@ -224,11 +248,8 @@ pub fn prop_explain_s5(c: S5Case) -> bool {
     let Some(start) = S5TimerRef::from_state(c.state, CpuTime::ZERO) else {
         return false;
     };
-    let (mut plain, mut explained) = (start, start);
-    let out = plain.call(c.kind, now, c.input);
-    let e = explained.call_explained(c.kind, now, c.input);
-    assert_eq!(e.output, out, "S5-EQUIV-01: explained outputs {c:?}");
-    assert_eq!(explained, plain, "S5-EQUIV-01: explained state {c:?}");
+    let (e, plain) = faithful(start, c.kind, now, c.input, "S5-EQUIV-01", &c);
+    let out = e.output;
 
     let reported = e.rules();
     sound(reported, |r| s5_premise(&c, r), &c);
@@ -437,13 +458,7 @@ fn exhaustive_explain_s5() {
                         };
                         for ticks in TICKS {
                             for &tv in &tvs {
-                                for bits in 0..8u8 {
-                                    let input = S5Input {
-                                        s: bits & 1 != 0,
-                                        r: bits & 2 != 0,
-                                        fr: bits & 4 != 0,
-                                        tv,
-                                    };
+                                for input in s5_timer_inputs(tv) {
                                     n += u64::from(prop_explain_s5(S5Case {
                                         kind,
                                         state,
@@ -503,20 +518,21 @@ explain_timer_harness!(kani_explain_s5_10s, TimeBase::S10);
 // ---------------------------------------------------------------------------------------------
 // IEC timers
 
-/// One IEC box call: the state before, the kind, the CPU time and the inputs.
+/// One IEC box call of data type `D` (`TIME` or `LTIME`): the state before, the kind, the CPU
+/// time (in `D`'s unit) and the inputs.
 #[derive(Clone, Copy, Debug)]
-pub struct IecCase<C> {
+pub struct IecCase<C, D: IecDuration = Time> {
     /// The structure before (valid).
     pub state: IecState<C>,
     /// The box.
     pub kind: IecKind,
     /// The CPU time of the call.
-    pub now: CpuTime,
+    pub now: CpuTime<D::Unit>,
     /// IN, PT, R.
-    pub input: IecInput,
+    pub input: IecInput<D>,
 }
 
-impl<C: ClockWord> IecCase<C> {
+impl<C: ClockWord, D: IecDuration> IecCase<C, D> {
     /// Whether the call starts the timer on its starting edge (S7-1200 manual, Table 8-20):
     /// TP on a rising IN with no pulse running (after the call's update), TON on a rising IN,
     /// TOF on a falling IN, TONR whenever IN = 1 and R = 0 with the timer stopped and not
@@ -547,12 +563,12 @@ impl<C: ClockWord> IecCase<C> {
 
     /// The preset at the box, as the instruction takes it (negative as 0, IEC-ET-RANGE-01).
     fn box_pt(&self) -> C {
-        C::from_preset(u64::from(self.input.pt.clamp_negative()))
+        C::from_preset(self.input.pt.units())
     }
 }
 
 /// The premise of each IEC rule a call may report, from the catalog's texts.
-fn iec_premise<C: ClockWord>(c: &IecCase<C>, rule: Rule) -> bool {
+fn iec_premise<C: ClockWord, D: IecDuration>(c: &IecCase<C, D>, rule: Rule) -> bool {
     let (st, i) = (&c.state, &c.input);
     let now = c.now.clock::<C>();
     let started = c.started();
@@ -573,14 +589,14 @@ fn iec_premise<C: ClockWord>(c: &IecCase<C>, rule: Rule) -> bool {
         Rule::IEC_PT0_01 => {
             (st.running && st.pt == C::ZERO)
                 || (started && c.box_pt() == C::ZERO)
-                || i.pt.clamp_negative() == 0
+                || i.pt.units() == 0
         }
         // now - START wrapped: the clock is below START (or TONR's START shifted back below
         // 0); or an update after the CPU time passed 2^BITS ms (the clock word has wrapped).
         Rule::IEC_WRAP_01 => {
             (st.running && now < st.start)
                 || (started && c.kind == IecKind::Tonr && st.et > now)
-                || (updated && now.to_u64() != c.now.as_millis())
+                || (updated && now.to_u64() != c.now.ticks())
         }
         // The structure records the instruction that last ran on it.
         Rule::IEC_ACCESS_01 => st.kind != Some(c.kind),
@@ -597,15 +613,12 @@ fn iec_premise<C: ClockWord>(c: &IecCase<C>, rule: Rule) -> bool {
 
 /// The IEC explanation, faithful, sound and complete for one call.
 #[covers]
-pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
+pub fn prop_explain_iec<C: ClockWord, D: IecDuration>(c: IecCase<C, D>) -> bool {
     let Some(start) = IecTimerRef::from_state(c.state) else {
         return false;
     };
-    let (mut plain, mut explained) = (start, start);
-    let out = plain.call(c.kind, c.now, c.input);
-    let e = explained.call_explained(c.kind, c.now, c.input);
-    assert_eq!(e.output, out, "IEC-STRUCT-01: explained outputs {c:?}");
-    assert_eq!(explained, plain, "IEC-STRUCT-01: explained state {c:?}");
+    let (e, plain) = faithful(start, c.kind, c.now, c.input, "IEC-STRUCT-01", &c);
+    let out = e.output;
 
     let reported = e.rules();
     sound(reported, |r| iec_premise(&c, r), &c);
@@ -675,7 +688,7 @@ pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
     // on through the call's update (no start, no reset) has Q by the comparison ET < PT
     // (IEC-EXPIRY-01) and ET by the update (IEC-START-01), on a wrapped clock word by
     // IEC-WRAP-01 too.
-    let pt0 = c.input.pt.clamp_negative() == 0;
+    let pt0 = c.input.pt.units() == 0;
     determined(Rule::IEC_PT0_01, 0, pt0, &e, &c);
     determined(Rule::IEC_PT0_01, 1, pt0, &e, &c);
     let runs_on = st.running && !started && !c.resets() && after.running;
@@ -685,7 +698,7 @@ pub fn prop_explain_iec<C: ClockWord>(c: IecCase<C>) -> bool {
     );
     determined(Rule::IEC_EXPIRY_01, 0, runs_on, &e, &c);
     determined(Rule::IEC_START_01, 1, runs_on, &e, &c);
-    let wrapped = now.to_u64() != c.now.as_millis();
+    let wrapped = now.to_u64() != c.now.ticks();
     determined(Rule::IEC_WRAP_01, 1, runs_on && wrapped, &e, &c);
     let was = (st.q, st.et);
     every_change_decided(
@@ -720,12 +733,20 @@ fn iec_cover(rule: Rule, hit: bool) {
 
 /// Exhaustive on the 4-bit clock (the small scope of `proofs/iec.rs`): every valid structure
 /// (46 240) x every kind x every `now` (16) x IN (and R for TONR) x the PTs -1 (taken as 0), 0,
-/// 1, 5 and 16 (above the clock: its top); two threads.
+/// 1, 5 and 16 (above the clock: its top); two threads; for `TIME` (ms clock) and `LTIME` (ns
+/// clock).
 // Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
 #[cfg(not(kani))]
 #[test]
 fn exhaustive_explain_iec_u4() {
-    const PTS: [i32; 5] = [-1, 0, 1, 5, 16];
+    explain_iec_u4::<Time>();
+    explain_iec_u4::<LTime>();
+}
+
+/// The body of [`exhaustive_explain_iec_u4`] for the data type `D`.
+#[cfg(not(kani))]
+fn explain_iec_u4<D: IecDuration>() {
+    const PTS: [i128; 5] = [-1, 0, 1, 5, 16];
     let states = all_states_u4();
     let checked = on_two_threads(&IecKind::ALL, |kinds| {
         let mut n = 0u64;
@@ -740,13 +761,13 @@ fn exhaustive_explain_iec_u4() {
                         for pt in PTS {
                             let input = IecInput {
                                 input: bits & 1 != 0,
-                                pt: Time::from_millis(pt),
+                                pt: D::from_units(pt).expect("within TIME and LTIME"),
                                 reset,
                             };
-                            n += u64::from(prop_explain_iec::<U4>(IecCase {
+                            n += u64::from(prop_explain_iec::<U4, D>(IecCase {
                                 state,
                                 kind,
-                                now: CpuTime::from_millis(now),
+                                now: CpuTime::from_ticks(now),
                                 input,
                             }));
                         }
@@ -763,33 +784,51 @@ fn exhaustive_explain_iec_u4() {
     );
 }
 
-/// The IEC explanation on the 32-bit clock: random cases under `cargo test`, every case
-/// under Kani. Symbolic: the structure's members (PT and ET kept to TIME's range), the kind,
-/// the CPU time and IN, R, PT. `#[kani::unwind(100)]`: `sound`'s loop over the catalog's rules
-/// (`Rule::COUNT`, below 100, iterations and the exit) is the longest; the others run over the 2 outputs.
+/// The IEC explanation on a full-width clock, the body of the harnesses of both data types:
+/// the structure's members (PT and ET kept to the data type's range), the kind, the CPU time
+/// and IN, R, PT.
+fn explain_iec_harness<D: FullWidth>()
+where
+    (IecState<D::Clock>, IecKind, CpuTime<D::Unit>, IecInput<D>): bolero::TypeGenerator,
+{
+    bolero::check!()
+        .with_type::<(IecState<D::Clock>, IecKind, CpuTime<D::Unit>, IecInput<D>)>()
+        .with_iterations(20_000)
+        .for_each(|&(st, kind, now, input)| {
+            prop_explain_iec(IecCase::<D::Clock, D> {
+                state: within_range::<D>(st),
+                kind,
+                now,
+                input,
+            });
+        });
+}
+
+/// The IEC explanation on the 32-bit clock (`TIME`): random cases under `cargo test`, every
+/// case under Kani. Symbolic: the structure's members (PT and ET kept to TIME's range), the
+/// kind, the CPU time and IN, R, PT. `#[kani::unwind(100)]`: `sound`'s loop over the catalog's
+/// rules (`Rule::COUNT`, below 100, iterations and the exit) is the longest; the others run
+/// over the 2 outputs.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(100))]
 fn kani_explain_iec() {
     crate::cover::harness(
         concat!(module_path!(), "::", stringify!(kani_explain_iec)),
-        || {
-            bolero::check!()
-                .with_type::<(IecState<u32>, IecKind, CpuTime, IecInput)>()
-                .with_iterations(20_000)
-                .for_each(|(st, kind, now, input)| {
-                    let state = IecState {
-                        pt: st.pt.min(i32::MAX as u32),
-                        et: st.et.min(st.pt.min(i32::MAX as u32)),
-                        ..*st
-                    };
-                    prop_explain_iec(IecCase {
-                        state,
-                        kind: *kind,
-                        now: *now,
-                        input: *input,
-                    });
-                });
-        },
+        explain_iec_harness::<Time>,
+    );
+}
+
+/// The IEC explanation on the 64-bit nanosecond clock (`LTIME`, `IEC_LTIMER`): random cases
+/// under `cargo test`, every case under Kani. Symbolic: the structure's members (PT and ET kept
+/// to LTIME's range), the kind, the CPU time and IN, R, PT. `#[kani::unwind(100)]`: `sound`'s
+/// loop over the catalog's rules (`Rule::COUNT`, below 100, iterations and the exit) is the
+/// longest; the others run over the 2 outputs.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(100))]
+fn kani_explain_ltimer() {
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_explain_ltimer)),
+        explain_iec_harness::<LTime>,
     );
 }
 
@@ -847,13 +886,11 @@ pub fn prop_explain_counter<T: CounterInt>(
     st: CounterState<T>,
     raw: CounterInput<T>,
 ) -> bool {
-    let start = CounterRef::from_state(st);
-    let (mut plain, mut explained) = (start, start);
-    let out: CounterOutput<T> = plain.call(kind, raw);
-    let e = explained.call_explained(kind, raw);
     let case = (kind, st, raw);
-    assert_eq!(e.output, out, "CNT-EQUIV-01: explained outputs {case:?}");
-    assert_eq!(explained, plain, "CNT-EQUIV-01: explained state {case:?}");
+    // A counter's call takes no time: `now` is ignored.
+    let start = CounterRef::from_state(st);
+    let (e, _) = faithful(start, kind, CpuTime::ZERO, raw, "CNT-EQUIV-01", &case);
+    let out = e.output;
     let reported = e.rules();
     sound(reported, |r| counter_premise(kind, &st, &raw, r), &case);
     let (cv_at, qs) = counter_outputs(kind);
@@ -960,24 +997,10 @@ fn exhaustive_explain_counters_8bit() {
         crate::cover::check_covers(|| {
             let mut n = 0;
             for kind in CounterKind::ALL {
-                for cv in values.clone() {
+                for st in counter_states(values.clone()) {
                     for pv in values.clone() {
-                        for m in 0..4u8 {
-                            let st = CounterState {
-                                cv,
-                                cu_prev: m & 1 != 0,
-                                cd_prev: m & 2 != 0,
-                            };
-                            for bits in 0..16u8 {
-                                let input = CounterInput {
-                                    cu: bits & 1 != 0,
-                                    cd: bits & 2 != 0,
-                                    r: bits & 4 != 0,
-                                    ld: bits & 8 != 0,
-                                    pv,
-                                };
-                                n += u64::from(prop_explain_counter(kind, st, input));
-                            }
+                        for input in counter_inputs(pv) {
+                            n += u64::from(prop_explain_counter(kind, st, input));
                         }
                     }
                 }
@@ -1053,12 +1076,10 @@ pub fn prop_explain_s5_counter(kind: S5CounterKind, st: S5CounterState, i: S5Cou
     let Some(start) = S5CounterRef::from_state(st) else {
         return false;
     };
-    let (mut plain, mut explained) = (start, start);
-    let out = plain.call(kind, i);
-    let e = explained.call_explained(kind, i);
     let case = (kind, st, i);
-    assert_eq!(e.output, out, "CNT-EQUIV-01: explained outputs {case:?}");
-    assert_eq!(explained, plain, "CNT-EQUIV-01: explained state {case:?}");
+    // A counter's call takes no time: `now` is ignored.
+    let (e, plain) = faithful(start, kind, CpuTime::ZERO, i, "CNT-EQUIV-01", &case);
+    let out = e.output;
     let reported = e.rules();
     sound(reported, |r| s5c_premise(kind, &st, &i, r), &case);
     assert!(
@@ -1204,27 +1225,10 @@ fn exhaustive_explain_s5_counters() {
     let n: u64 = crate::cover::check_covers(|| {
         let mut n = 0;
         for kind in S5CounterKind::ALL {
-            for cv in 0..=CV_MAX {
-                for m in 0..16u8 {
-                    let st = S5CounterState {
-                        cv,
-                        cu_prev: m & 1 != 0,
-                        cd_prev: m & 2 != 0,
-                        s_prev: m & 4 != 0,
-                        fr_prev: m & 8 != 0,
-                    };
-                    for &pv in &presets {
-                        for bits in 0..32u8 {
-                            let input = S5CounterInput {
-                                cu: bits & 1 != 0,
-                                cd: bits & 2 != 0,
-                                s: bits & 4 != 0,
-                                r: bits & 8 != 0,
-                                fr: bits & 16 != 0,
-                                pv,
-                            };
-                            n += u64::from(prop_explain_s5_counter(kind, st, input));
-                        }
+            for st in s5_counter_states(0..=CV_MAX) {
+                for &pv in &presets {
+                    for input in s5_counter_inputs(pv) {
+                        n += u64::from(prop_explain_s5_counter(kind, st, input));
                     }
                 }
             }

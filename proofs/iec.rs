@@ -2,18 +2,22 @@
 //! operation (box call, update-on-access reads, RT and PT coils, RUN-STOP-RUN), the invariants
 //! hold, no start without the starting edge, no panic.
 //!
-//! Small scope: both implementations are generic over the clock width. The exhaustive driver
-//! runs them on a 4-bit clock ([`U4`]), where every state and every operation can be
-//! enumerated; the code under test is the same generic code as on the 32-bit clock, and every
-//! ordering of START, now, ET and PT, and every wrap of `now - START`, occurs at 4 bits. The
-//! proptest driver and the Kani harnesses cover the 32-bit clock.
+//! Small scope: both implementations are generic over the clock width and over the data type
+//! of PT and ET (`TIME` in milliseconds, `LTIME` in nanoseconds: [`IecDuration`]). The
+//! exhaustive drivers run them on a 4-bit clock ([`U4`]) and on `u8`, where every state and
+//! every operation can be enumerated, once with `TIME` presets on the millisecond clock and
+//! once with `LTIME` presets on the nanosecond clock; the code under test is the same generic
+//! code as on the full-width clocks, and every ordering of START, now, ET and PT, and every
+//! wrap of `now - START`, occurs at 4 bits. The proptest driver covers the 32-bit clock; the
+//! Kani harnesses state the full widths, `IEC_TIMER` (32-bit ms clock, `TIME`) and
+//! `IEC_LTIMER` (64-bit ns clock, `LTIME`), from one generic body each.
 
 use crate::cover::{check, check_eq};
 use std::thread;
 
 use plc_timers::iec::{IecInput, IecKind, IecState, IecTimerOf, IecTimerOps, IecTimerRef, TonBank};
 use plc_timers::time::clock::ClockWord;
-use plc_timers::time::{CpuTime, Time};
+use plc_timers::time::{CpuTime, IecDuration, LTime, Time, TimeUnit};
 use plc_timers::{NoSuchOperand, Operand};
 use proptest::prelude::*;
 
@@ -42,24 +46,29 @@ impl ClockWord for U4 {
     }
 }
 
-/// One operation on a timer structure.
+/// One operation on a timer structure of data type `D` (its CPU time in `D`'s unit).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, bolero::TypeGenerator)]
-pub enum Op {
+pub enum Op<D: IecDuration = Time> {
     /// A box call.
-    Call(IecKind, CpuTime, IecInput),
+    Call(IecKind, CpuTime<D::Unit>, IecInput<D>),
     /// Reading `Q` through the structure at a time.
-    ReadQ(CpuTime),
+    ReadQ(CpuTime<D::Unit>),
     /// Reading `ELAPSED` through the structure at a time.
-    ReadEt(CpuTime),
+    ReadEt(CpuTime<D::Unit>),
     /// The RT coil.
     Rt,
     /// The PT coil.
-    PtCoil(Time),
+    PtCoil(D),
     /// RUN-STOP-RUN (retentive or not).
     RunStopRun(bool),
 }
 
-fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op) -> (bool, C) {
+/// `units` of `D` (a preset of the drivers), saturated at `D`'s range.
+fn preset_of<D: IecDuration>(units: i128) -> D {
+    D::from_units(units).unwrap_or(if units < 0 { D::ZERO } else { D::MAX })
+}
+
+fn apply<C: ClockWord, D: IecDuration, T: IecTimerOps<C, D>>(t: &mut T, op: Op<D>) -> (bool, C) {
     match op {
         Op::Call(kind, now, input) => {
             let o = t.call(kind, now, input);
@@ -87,8 +96,8 @@ fn apply<C: ClockWord, T: IecTimerOps<C>>(t: &mut T, op: Op) -> (bool, C) {
 
 /// IEC-STRUCT-01: for every valid state and operation, the structure's result and its state
 /// mapped through the abstraction function equal the reference's.
-pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
-    let Some(mut opt) = IecTimerOf::from_state(state) else {
+pub fn prop_step_equivalence<C: ClockWord, D: IecDuration>(state: IecState<C>, op: Op<D>) -> bool {
+    let Some(mut opt) = IecTimerOf::<C, D>::from_state(state) else {
         return false;
     };
     check_eq!(
@@ -96,7 +105,7 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
         state,
         "IEC-STRUCT-01: abstraction inverts from_state"
     );
-    let mut r = IecTimerRef::from_state(state).expect("valid");
+    let mut r = IecTimerRef::<C, D>::from_state(state).expect("valid");
     let ro = apply(&mut r, op);
     let oo = apply(&mut opt, op);
     check_eq!(oo, ro, "IEC-STRUCT-01 outputs {state:?} {op:?}");
@@ -119,12 +128,12 @@ pub fn prop_step_equivalence<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
 /// One step of IEC-EQUIV-02: applies `op` to both timers, then compares the outputs, the
 /// structure mapped through the abstraction function with the reference state, and the
 /// validity invariant. `step` and `ops` only name the step in the failure message.
-fn sequence_step<C: ClockWord>(
-    r: &mut IecTimerRef<C>,
-    opt: &mut IecTimerOf<C>,
-    op: Op,
+fn sequence_step<C: ClockWord, D: IecDuration>(
+    r: &mut IecTimerRef<C, D>,
+    opt: &mut IecTimerOf<C, D>,
+    op: Op<D>,
     step: usize,
-    ops: &[Op],
+    ops: &[Op<D>],
 ) {
     let ro = apply(r, op);
     let oo = apply(opt, op);
@@ -148,9 +157,9 @@ fn sequence_step<C: ClockWord>(
 /// IEC-EQUIV-02: from the initial structure, every sequence of operations gives the same
 /// outputs and (through the abstraction function) the same states in the reference and the
 /// 16-byte structure, and every state on the way is valid.
-pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op]) {
-    let mut r = IecTimerRef::<C>::default();
-    let mut opt = IecTimerOf::<C>::new();
+pub fn prop_sequence_equivalence<C: ClockWord, D: IecDuration>(ops: &[Op<D>]) {
+    let mut r = IecTimerRef::<C, D>::default();
+    let mut opt = IecTimerOf::<C, D>::new();
     check_eq!(opt.state(), r.state(), "IEC-EQUIV-02 initial state");
     for (i, &op) in ops.iter().enumerate() {
         sequence_step(&mut r, &mut opt, op, i, ops);
@@ -161,11 +170,11 @@ pub fn prop_sequence_equivalence<C: ClockWord>(ops: &[Op]) {
 /// latched, non-negative preset); after RT, ET = 0 and Q = 0 and the timer is stopped; a stopped
 /// timer starts only on its starting edge (rising IN for TP and TON, falling IN for TOF; for
 /// TONR, IN = 1 with R = 0, the decision TONR-RESUME-01).
-pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
+pub fn prop_invariants<C: ClockWord, D: IecDuration>(state: IecState<C>, op: Op<D>) -> bool {
     if !state.is_valid() {
         return false;
     }
-    let mut r = IecTimerRef::from_state(state).expect("valid");
+    let mut r = IecTimerRef::<C, D>::from_state(state).expect("valid");
     let (q, et) = apply(&mut r, op);
     let after = r.state();
     // Stated here rather than through `IecState::is_valid`, so that the property does not
@@ -184,8 +193,9 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
         "outputs are the structure's members"
     );
     check!(
-        after.pt.to_u64() <= i32::MAX as u64,
-        "IEC-ET-RANGE-01: PT is a non-negative TIME"
+        i128::from(after.pt.to_u64()) <= i128::from(D::MAX.units_signed()),
+        "IEC-ET-RANGE-01: PT is a non-negative {}",
+        D::NAME
     );
     match op {
         Op::Rt => check!(
@@ -218,12 +228,12 @@ pub fn prop_invariants<C: ClockWord>(state: IecState<C>, op: Op) -> bool {
 /// gives the same result whatever PT is: IEC-PT-LATCH-01); TP ignores IN while running
 /// (TP-IN-01); TON resets and stops on IN = 0 (TON-IN-01); TOF resets and stops on IN = 1
 /// (TOF-IN-01); TONR stops without reset on IN = 0 (TONR-IN-01).
-pub fn prop_table_8_20<C: ClockWord>(
+pub fn prop_table_8_20<C: ClockWord, D: IecDuration>(
     state: IecState<C>,
     kind: IecKind,
-    now: CpuTime,
-    input: IecInput,
-    other_pt: Time,
+    now: CpuTime<D::Unit>,
+    input: IecInput<D>,
+    other_pt: D,
 ) -> bool {
     // "While the timer runs": started, of this kind, not yet at PT at `now`, and with the stored
     // IN a running timer of this kind has (1 for TON and TONR, 0 for TOF): the reachable states.
@@ -240,8 +250,8 @@ pub fn prop_table_8_20<C: ClockWord>(
     {
         return false;
     }
-    let step = |input: IecInput| {
-        let mut r = IecTimerRef::from_state(state).expect("valid");
+    let step = |input: IecInput<D>| {
+        let mut r = IecTimerRef::<C, D>::from_state(state).expect("valid");
         let o = r.call(kind, now, input);
         (o, r.state())
     };
@@ -319,13 +329,19 @@ pub fn all_states_u4() -> Vec<IecState<U4>> {
     v
 }
 
-/// PT inputs: negative (taken as 0), 0, 1, the middle, one below the clock's range, its top,
-/// above it, and the largest TIME.
-const PTS: [i32; 8] = [-1, 0, 1, 5, 14, 15, 16, i32::MAX];
+/// PT inputs in units of the data type: negative (taken as 0), 0, 1, the middle, one below the
+/// clock's range, its top, above it, and the largest value of the data type ([`pts`]).
+const PTS: [i128; 8] = [-1, 0, 1, 5, 14, 15, 16, i128::MAX];
+
+/// [`PTS`] of `D` (the last, the largest `D`).
+fn pts<D: IecDuration>() -> [D; 8] {
+    PTS.map(preset_of)
+}
 
 /// Every operation on the 4-bit clock: calls of each kind at every `now` with every IN (and R
 /// for TONR) and PT of `PTS`; reads at every `now`; RT; PT coil with every PT; RUN-STOP-RUN.
-pub fn all_ops_u4() -> Vec<Op> {
+/// `now` and PT in `D`'s unit (ms for `TIME`, ns for `LTIME`).
+pub fn all_ops_u4<D: IecDuration>() -> Vec<Op<D>> {
     let mut ops = Vec::new();
     for kind in IecKind::ALL {
         for now in 0..16u8 {
@@ -334,15 +350,11 @@ pub fn all_ops_u4() -> Vec<Op> {
                     if reset && kind != IecKind::Tonr {
                         continue;
                     }
-                    for pt in PTS {
+                    for pt in pts::<D>() {
                         ops.push(Op::Call(
                             kind,
-                            CpuTime::from_millis(u64::from(now)),
-                            IecInput {
-                                input,
-                                pt: Time::from_millis(pt),
-                                reset,
-                            },
+                            CpuTime::from_ticks(u64::from(now)),
+                            IecInput { input, pt, reset },
                         ));
                     }
                 }
@@ -350,23 +362,29 @@ pub fn all_ops_u4() -> Vec<Op> {
         }
     }
     for now in 0..16u8 {
-        ops.push(Op::ReadQ(CpuTime::from_millis(u64::from(now))));
-        ops.push(Op::ReadEt(CpuTime::from_millis(u64::from(now))));
+        ops.push(Op::ReadQ(CpuTime::from_ticks(u64::from(now))));
+        ops.push(Op::ReadEt(CpuTime::from_ticks(u64::from(now))));
     }
     ops.push(Op::Rt);
-    ops.extend(PTS.map(|pt| Op::PtCoil(Time::from_millis(pt))));
+    ops.extend(pts::<D>().map(Op::PtCoil));
     ops.push(Op::RunStopRun(false));
     ops.push(Op::RunStopRun(true));
     ops
 }
 
 /// Exhaustive on the 4-bit clock: every valid state (46 240) x every operation (1 323):
-/// 61 million steps, on two threads. See the module doc for why 4 bits is a complete small
-/// scope for this generic code.
+/// 61 million steps, on two threads, for `TIME` (ms clock) and for `LTIME` (ns clock). See the
+/// module doc for why 4 bits is a complete small scope for this generic code.
 #[test]
 fn exhaustive_u4_step_equivalence_and_invariants() {
+    step_equivalence_and_invariants_u4::<Time>();
+    step_equivalence_and_invariants_u4::<LTime>();
+}
+
+/// The body of [`exhaustive_u4_step_equivalence_and_invariants`] for the data type `D`.
+fn step_equivalence_and_invariants_u4<D: IecDuration>() {
     let states = all_states_u4();
-    let ops = all_ops_u4();
+    let ops = all_ops_u4::<D>();
     check_eq!(states.len(), 46_240);
     let (a, b) = states.split_at(states.len() / 2);
     let n = thread::scope(|scope| {
@@ -381,7 +399,7 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
                         n[1] += u64::from(prop_invariants(state, op));
                         if let Op::Call(kind, now, input) = op {
                             let checked =
-                                prop_table_8_20(state, kind, now, input, Time::from_millis(3));
+                                prop_table_8_20(state, kind, now, input, preset_of::<D>(3));
                             n[2] += u64::from(checked);
                         }
                     }
@@ -405,16 +423,16 @@ fn exhaustive_u4_step_equivalence_and_invariants() {
 /// `now` in {0, 2, 7, 14} (so that a START of 14 followed by `now` = 2 crosses the wrap) with
 /// every IN (and R for TONR) and PT in {-1, 0, 5, 15}; reads of Q and ELAPSED at 2 and 14; RT;
 /// the PT coil with 5; RUN-STOP-RUN both ways: 168 operations.
-fn sequence_ops_u4() -> Vec<Op> {
+fn sequence_ops_u4<D: IecDuration>() -> Vec<Op<D>> {
     let pts = [-1, 0, 5, 15];
-    all_ops_u4()
+    all_ops_u4::<D>()
         .into_iter()
         .filter(|op| match *op {
             Op::Call(_, now, input) => {
-                [0, 2, 7, 14].contains(&now.as_millis()) && pts.contains(&input.pt.as_millis())
+                [0, 2, 7, 14].contains(&now.ticks()) && pts.contains(&input.pt.units_signed())
             }
-            Op::ReadQ(now) | Op::ReadEt(now) => now.as_millis() == 2 || now.as_millis() == 14,
-            Op::PtCoil(pt) => pt.as_millis() == 5,
+            Op::ReadQ(now) | Op::ReadEt(now) => now.ticks() == 2 || now.ticks() == 14,
+            Op::PtCoil(pt) => pt.units_signed() == 5,
             Op::Rt | Op::RunStopRun(_) => true,
         })
         .collect()
@@ -422,11 +440,11 @@ fn sequence_ops_u4() -> Vec<Op> {
 
 /// Depth-first over every sequence of `depth` more operations from `alphabet`, checking each
 /// step as [`prop_sequence_equivalence`] does; returns the number of steps checked.
-fn sequences_from(
-    r: &IecTimerRef<U4>,
-    opt: &IecTimerOf<U4>,
-    alphabet: &[Op],
-    prefix: &mut Vec<Op>,
+fn sequences_from<D: IecDuration>(
+    r: &IecTimerRef<U4, D>,
+    opt: &IecTimerOf<U4, D>,
+    alphabet: &[Op<D>],
+    prefix: &mut Vec<Op<D>>,
     depth: usize,
 ) -> u64 {
     if depth == 0 {
@@ -445,29 +463,41 @@ fn sequences_from(
 
 /// IEC-EQUIV-02, bounded exhaustive on the 4-bit clock: every sequence of up to 3 operations
 /// from the 168-operation alphabet of [`sequence_ops_u4`] (168 + 168^2 + 168^3 = 4 769 640
-/// steps), from the initial structure. This complements the one-step simulation relation
-/// (which covers every valid state, reachable or not) with the end-to-end view from power-up.
+/// steps), from the initial structure, for `TIME` and for `LTIME`. This complements the
+/// one-step simulation relation (which covers every valid state, reachable or not) with the
+/// end-to-end view from power-up.
 #[test]
 fn bounded_sequences_u4_from_initial_state() {
-    let alphabet = sequence_ops_u4();
-    check_eq!(alphabet.len(), 168);
-    let steps = sequences_from(
-        &IecTimerRef::default(),
-        &IecTimerOf::new(),
-        &alphabet,
-        &mut Vec::new(),
-        3,
-    );
-    check_eq!(steps, 168 + 168 * 168 + 168 * 168 * 168);
+    fn sequences<D: IecDuration>() {
+        let alphabet = sequence_ops_u4::<D>();
+        check_eq!(alphabet.len(), 168);
+        let steps = sequences_from(
+            &IecTimerRef::<U4, D>::default(),
+            &IecTimerOf::new(),
+            &alphabet,
+            &mut Vec::new(),
+            3,
+        );
+        check_eq!(steps, 168 + 168 * 168 + 168 * 168 * 168);
+    }
+    sequences::<Time>();
+    sequences::<LTime>();
 }
 
 /// The update on the real `u8` instance of the generic code (no test-only clock): every START
 /// (256) x every `now` (256) x every latched PT (256) for each of the four kinds, a running
 /// timer with ET = 0 called with IN held (the plain update path): 67 million steps of
-/// IEC-STRUCT-01 and the invariants. Every wrap of `now - START` on the 8-bit clock occurs, at
-/// every START; the generic code is the same as on the 32-bit clock.
+/// IEC-STRUCT-01 and the invariants, for `TIME` (ms clock) and for `LTIME` (ns clock). Every
+/// wrap of `now - START` on the 8-bit clock occurs, at every START; the generic code is the
+/// same as on the full-width clocks.
 #[test]
 fn exhaustive_u8_update_every_start_now_pt() {
+    update_every_start_now_pt_u8::<Time>();
+    update_every_start_now_pt_u8::<LTime>();
+}
+
+/// The body of [`exhaustive_u8_update_every_start_now_pt`] for the data type `D`.
+fn update_every_start_now_pt_u8<D: IecDuration>() {
     let kinds = IecKind::ALL;
     let checked: u64 = thread::scope(|scope| {
         let workers: Vec<_> = kinds
@@ -492,8 +522,8 @@ fn exhaustive_u8_update_every_start_now_pt() {
                                 for now in 0..=255u8 {
                                     let op = Op::Call(
                                         kind,
-                                        CpuTime::from_millis(u64::from(now)),
-                                        IecInput::new(input, Time::from_millis(5)),
+                                        CpuTime::from_ticks(u64::from(now)),
+                                        IecInput::new(input, preset_of::<D>(5)),
                                     );
                                     n += u64::from(prop_step_equivalence(state, op));
                                     n += u64::from(prop_invariants(state, op));
@@ -589,7 +619,7 @@ proptest! {
     /// kind, reads, coils, RUN-STOP-RUN) from the initial structure, times near the wrap.
     #[test]
     fn proptest_u32_sequences_from_initial_state(ops in prop::collection::vec(arb_op_u32(), 1..40)) {
-        prop_sequence_equivalence::<u32>(&ops);
+        prop_sequence_equivalence::<u32, Time>(&ops);
     }
 }
 
@@ -770,19 +800,19 @@ pub enum IecImpl {
 
 /// `op` from `state` through `imp`: the state after and the outputs (Q, ET), or `None` when the
 /// implementation has no such operation.
-pub fn iec_run<C: ClockWord>(
+pub fn iec_run<C: ClockWord, D: IecDuration>(
     imp: IecImpl,
     state: IecState<C>,
-    op: Op,
+    op: Op<D>,
 ) -> Option<(IecState<C>, (bool, C))> {
     match imp {
         IecImpl::Reference => {
-            let mut t = IecTimerRef::from_state(state).expect("valid");
+            let mut t = IecTimerRef::<C, D>::from_state(state).expect("valid");
             let out = apply(&mut t, op);
             Some((t.state(), out))
         }
         IecImpl::Structure => {
-            let mut t = IecTimerOf::from_state(state).expect("valid");
+            let mut t = IecTimerOf::<C, D>::from_state(state).expect("valid");
             let out = apply(&mut t, op);
             Some((t.state(), out))
         }
@@ -791,7 +821,7 @@ pub fn iec_run<C: ClockWord>(
             let Op::Call(IecKind::Ton, now, input) = op else {
                 return None;
             };
-            let mut t = IecTimerOf::from_state(state).expect("valid");
+            let mut t = IecTimerOf::<C, D>::from_state(state).expect("valid");
             let out = t.ton_for_arrays(now, input);
             Some((t.state(), (out.q, out.et)))
         }
@@ -799,7 +829,7 @@ pub fn iec_run<C: ClockWord>(
             let Op::Call(IecKind::Ton, now, input) = op else {
                 return None;
             };
-            let mut t = [IecTimerOf::from_state(state).expect("valid")];
+            let mut t = [IecTimerOf::<C, D>::from_state(state).expect("valid")];
             let (mut q, mut et) = ([!state.q], [C::ZERO]);
             IecTimerOf::ton_array(&mut t, now, &[input.input], &[input.pt], &mut q, &mut et);
             Some((t[0].state(), (q[0], et[0])))
@@ -807,15 +837,23 @@ pub fn iec_run<C: ClockWord>(
     }
 }
 
-/// A TON call on a one-timer bank holding `state` (32-bit clock only).
-fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (bool, C))> {
+/// A TON call on a one-timer bank holding `state` (`TIME` on the 32-bit clock only).
+fn bank_run<C: ClockWord, D: IecDuration>(
+    state: IecState<C>,
+    op: Op<D>,
+) -> Option<(IecState<C>, (bool, C))> {
     let Op::Call(IecKind::Ton, now, input) = op else {
         return None;
     };
+    // The bank is of TIME timers, whose clock word is the 32-bit one (LTIME's is 64 bits).
+    let time = <D::Clock as ClockWord>::BITS == 32;
     // The bank holds TON states as a scan leaves them: running only with IN = 1 and Q = 0.
-    if C::BITS != 32 || !matches!(state.kind, Some(IecKind::Ton)) || !iec_reachable(&state) {
+    if !time || C::BITS != 32 || !matches!(state.kind, Some(IecKind::Ton)) || !iec_reachable(&state)
+    {
         return None;
     }
+    let now = CpuTime::from_millis(now.ticks());
+    let pt = Time::from_millis(i32::try_from(input.pt.units_signed()).expect("a TIME"));
     let w = |c: C| u32::try_from(c.to_u64()).expect("32 bits");
     let c = |v: u32| C::from_u64_wrapping(u64::from(v));
     let mut bank = TonBank::<1>::new();
@@ -833,7 +871,7 @@ fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (b
         Ok(true),
         "IEC-BANK-01: the bank takes every valid TON state"
     );
-    bank.scan(now, &[input.input], &[input.pt]);
+    bank.scan(now, &[input.input], &[pt]);
     let after = bank.get(0).expect("timer 0");
     let out = bank.output(0).expect("timer 0");
     check_eq!(
@@ -857,16 +895,23 @@ fn bank_run<C: ClockWord>(state: IecState<C>, op: Op) -> Option<(IecState<C>, (b
 
 /// The preset an instruction latches, computed here: negative taken as 0, saturated at the
 /// clock's top on the narrow clocks.
-fn latched<C: ClockWord>(pt: Time) -> u64 {
-    u64::try_from(pt.as_millis().max(0))
+fn latched<C: ClockWord, D: IecDuration>(pt: D) -> u64 {
+    u64::try_from(pt.units_signed().max(0))
         .expect("non-negative")
         .min(C::MAX.to_u64())
 }
 
-/// `now - start` modulo 2^BITS on the CPU's millisecond clock, computed in u64.
-fn elapsed<C: ClockWord>(now: CpuTime, start: C) -> u64 {
-    let m = 1u64 << C::BITS;
-    (now.as_millis() % m + m - start.to_u64()) % m
+/// The clock's values, 0..2^BITS, as a mask in u128 (2^64 - 1 for the 64-bit clock): a value
+/// modulo 2^BITS is the value and the mask (no division, which Kani handles badly).
+fn clock_mask<C: ClockWord>() -> u128 {
+    (1u128 << C::BITS) - 1
+}
+
+/// `now - start` modulo 2^BITS on the CPU's clock (in its unit), computed in u128.
+fn elapsed<C: ClockWord, U: TimeUnit>(now: CpuTime<U>, start: C) -> u64 {
+    let m = clock_mask::<C>();
+    u64::try_from((u128::from(now.ticks()) + (m + 1) - u128::from(start.to_u64())) & m)
+        .expect("below 2^BITS")
 }
 
 fn q_while(kind: IecKind) -> bool {
@@ -874,7 +919,11 @@ fn q_while(kind: IecKind) -> bool {
 }
 
 /// The update in closed form (IEC-START-01's `elapsed = now - START`, IEC-EXPIRY-01).
-fn updated<C: ClockWord>(st: IecState<C>, now: CpuTime, kind: IecKind) -> IecState<C> {
+fn updated<C: ClockWord, U: TimeUnit>(
+    st: IecState<C>,
+    now: CpuTime<U>,
+    kind: IecKind,
+) -> IecState<C> {
     if !st.running {
         return st;
     }
@@ -967,7 +1016,11 @@ fn cover_tonr_resume(premise: bool) {
 /// Every IEC rule on one operation through `imp`, with the kind covers `K`. Returns whether it
 /// was checked.
 #[covers]
-pub fn check_iec_rules<C: ClockWord, K: KindCovers>(imp: IecImpl, st: IecState<C>, op: Op) -> bool {
+pub fn check_iec_rules<C: ClockWord, D: IecDuration, K: KindCovers>(
+    imp: IecImpl,
+    st: IecState<C>,
+    op: Op<D>,
+) -> bool {
     if !st.is_valid() {
         return false;
     }
@@ -989,11 +1042,12 @@ pub fn check_iec_rules<C: ClockWord, K: KindCovers>(imp: IecImpl, st: IecState<C
         "IEC-ET-RANGE-01: {imp:?}: ET <= PT: {st:?} {op:?} -> {post:?}"
     );
     check!(
-        post.pt.to_u64() <= i32::MAX as u64,
-        "IEC-ET-RANGE-01: {imp:?}: PT is a non-negative TIME"
+        i128::from(post.pt.to_u64()) <= i128::from(D::MAX.units_signed()),
+        "IEC-ET-RANGE-01: {imp:?}: PT is a non-negative {}",
+        D::NAME
     );
     match op {
-        Op::Call(kind, now, i) => call_rules::<C, K>(imp, st, kind, now, i, post),
+        Op::Call(kind, now, i) => call_rules::<C, D, K>(imp, st, kind, now, i, post),
         Op::ReadQ(now) | Op::ReadEt(now) => {
             let expected = match st.kind {
                 Some(kind) => updated(st, now, kind),
@@ -1033,7 +1087,7 @@ pub fn check_iec_rules<C: ClockWord, K: KindCovers>(imp: IecImpl, st: IecState<C
             "IEC-RT-01: {imp:?}: RT zeroes ET, Q, running and the stored IN; PT stays"
         ),
         Op::PtCoil(pt) => {
-            let p = latched::<C>(pt);
+            let p = latched::<C, D>(pt);
             check_eq!(
                 post.pt.to_u64(),
                 p,
@@ -1067,19 +1121,19 @@ pub fn check_iec_rules<C: ClockWord, K: KindCovers>(imp: IecImpl, st: IecState<C
 }
 
 #[covers]
-fn call_rules<C: ClockWord, K: KindCovers>(
+fn call_rules<C: ClockWord, D: IecDuration, K: KindCovers>(
     imp: IecImpl,
     st: IecState<C>,
     kind: IecKind,
-    now: CpuTime,
-    i: IecInput,
+    now: CpuTime<D::Unit>,
+    i: IecInput<D>,
     post: IecState<C>,
 ) {
     // The clock's value at `now`, computed here (not with the crate's `ClockWord`): the CPU's
-    // millisecond count modulo 2^BITS.
-    let now_clock = now.as_millis() & ((1u64 << C::BITS) - 1);
+    // count (ms or ns) modulo 2^BITS.
+    let now_clock = u64::try_from(u128::from(now.ticks()) & clock_mask::<C>()).expect("a clock");
     let e = elapsed(now, st.start);
-    let p = latched::<C>(i.pt);
+    let p = latched::<C, D>(i.pt);
     let same_kind = st.kind == Some(kind);
     let running = st.running && same_kind;
     let expired_now = running && e >= st.pt.to_u64();
@@ -1118,7 +1172,7 @@ fn call_rules<C: ClockWord, K: KindCovers>(
                 "IEC-PT0-01: {imp:?}: PT = 0: the starting call updates (TON on, no TP pulse, TOF off): {st:?} {kind:?} {i:?} -> {post:?}"
             );
         }
-        if i.pt.as_millis() < 0 {
+        if i.pt.units_signed() < 0 {
             check_eq!(
                 post.pt,
                 C::ZERO,
@@ -1193,14 +1247,14 @@ fn call_rules<C: ClockWord, K: KindCovers>(
     }
     cover!(
         continues && e + 1 == st.pt.to_u64(),
-        "IEC-EXPIRY-01: one ms before PT"
+        "IEC-EXPIRY-01: one clock unit (ms or ns) before PT"
     );
     cover!(
         continues && e == st.pt.to_u64(),
         "IEC-EXPIRY-01: exactly at PT"
     );
     cover!(
-        continues && st.start.to_u64() > now.as_millis() % (1u64 << C::BITS),
+        continues && st.start.to_u64() > now_clock,
         "IEC-WRAP-01: the clock wrapped since START"
     );
     match kind {
@@ -1311,8 +1365,9 @@ fn call_rules<C: ClockWord, K: KindCovers>(
     if !continues && st.running && same_kind {
         // IEC-PT-LATCH-01 as a metamorphic relation: the same call with another PT gives the
         // same result while the timer runs (unless this call starts it anew).
+        let pt = i128::from(i.pt.units_signed());
         let other = IecInput {
-            pt: Time::from_millis(i.pt.as_millis().wrapping_add(3)),
+            pt: D::from_units(pt + 3).unwrap_or(preset_of(pt - 3)),
             ..i
         };
         if !start_edge {
@@ -1330,7 +1385,10 @@ fn call_rules<C: ClockWord, K: KindCovers>(
 /// step equal to the reference's (IEC-STRUCT-01 for the structure and its array forms
 /// `ton_for_arrays` and `ton_array`, IEC-BANK-01 for the bank's TON, against `IecTimerRef`).
 /// `K`: the kind covers of the caller's domain ([`KindCovers`]).
-pub fn prop_iec_rules<C: ClockWord, K: KindCovers>(st: IecState<C>, op: Op) -> bool {
+pub fn prop_iec_rules<C: ClockWord, D: IecDuration, K: KindCovers>(
+    st: IecState<C>,
+    op: Op<D>,
+) -> bool {
     let mut checked = false;
     let reference = st
         .is_valid()
@@ -1343,7 +1401,7 @@ pub fn prop_iec_rules<C: ClockWord, K: KindCovers>(st: IecState<C>, op: Op) -> b
         IecImpl::TonForArrays,
         IecImpl::TonArray,
     ] {
-        checked |= check_iec_rules::<C, K>(imp, st, op);
+        checked |= check_iec_rules::<C, D, K>(imp, st, op);
         if let (Some(r), Some(x)) = (
             reference,
             st.is_valid().then(|| iec_run(imp, st, op)).flatten(),
@@ -1407,17 +1465,51 @@ pub fn prop_struct(state: IecState<u32>) {
 /// The rule driver on the 4-bit clock: every valid state with PT in {0, 1, 2, 5, 14, 15} (every
 /// START, ET <= PT, kind, IN, running, Q) x every operation of [`all_ops_u4`]. Small scope:
 /// the rules compare `now - START` modulo 16 with PT and 0, which every (START, now) pair of
-/// the 4-bit clock covers in every wrap case; Kani (`kani_iec_*_rules`, one per kind) runs the same body on
-/// the 32-bit clock.
+/// the 4-bit clock covers in every wrap case; for `TIME` (ms clock) and `LTIME` (ns clock).
+/// Kani (`kani_iec_*_rules` and `kani_ltimer_*_rules`, one per kind and data type) runs the
+/// same body on the full-width clocks.
 // Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
 #[cfg(not(kani))]
 #[test]
 fn exhaustive_u4_iec_rules() {
+    // Each data type's run reaches every rule and cover of its own.
+    for hits in [iec_rules_u4::<Time>(), iec_rules_u4::<LTime>()] {
+        crate::cover::require_checked(
+            &[
+                "IEC-START-01",
+                "IEC-EDGE-01",
+                "IEC-PT-LATCH-01",
+                "IEC-EXPIRY-01",
+                "IEC-ET-RANGE-01",
+                "IEC-PT0-01",
+                "IEC-WRAP-01",
+                "IEC-ACCESS-01",
+                "TP-IN-01",
+                "TP-RETRIGGER-01",
+                "TON-IN-01",
+                "TOF-IN-01",
+                "TONR-IN-01",
+                "TONR-RESUME-01",
+                "TONR-R-01",
+                "IEC-RT-01",
+                "IEC-PT-COIL-01",
+                "IEC-RETAIN-01",
+            ],
+            &hits,
+        );
+        crate::cover::require(hits);
+    }
+}
+
+/// The body of [`exhaustive_u4_iec_rules`] for the data type `D`: what its covers and checks
+/// recorded.
+#[cfg(not(kani))]
+fn iec_rules_u4<D: IecDuration>() -> crate::cover::Hits {
     let states: Vec<IecState<U4>> = all_states_u4()
         .into_iter()
         .filter(|s| [0, 1, 2, 5, 14, 15].contains(&s.pt.0))
         .collect();
-    let ops = all_ops_u4();
+    let ops = all_ops_u4::<D>();
     let (a, b) = states.split_at(states.len() / 2);
     let hits = thread::scope(|scope| {
         let workers: Vec<_> = [a, b]
@@ -1429,7 +1521,7 @@ fn exhaustive_u4_iec_rules() {
                         let mut n = 0u64;
                         for &st in part {
                             for &op in ops {
-                                n += u64::from(prop_iec_rules::<U4, AllKindCovers>(st, op));
+                                n += u64::from(prop_iec_rules::<U4, D, AllKindCovers>(st, op));
                             }
                         }
                         n
@@ -1444,76 +1536,60 @@ fn exhaustive_u4_iec_rules() {
     });
     let n: u64 = hits.iter().map(|(n, _)| n).sum();
     let hits = crate::cover::merge(hits.into_iter().map(|(_, h)| h));
-    crate::cover::require_checked(
-        &[
-            "IEC-START-01",
-            "IEC-EDGE-01",
-            "IEC-PT-LATCH-01",
-            "IEC-EXPIRY-01",
-            "IEC-ET-RANGE-01",
-            "IEC-PT0-01",
-            "IEC-WRAP-01",
-            "IEC-ACCESS-01",
-            "TP-IN-01",
-            "TP-RETRIGGER-01",
-            "TON-IN-01",
-            "TOF-IN-01",
-            "TONR-IN-01",
-            "TONR-RESUME-01",
-            "TONR-R-01",
-            "IEC-RT-01",
-            "IEC-PT-COIL-01",
-            "IEC-RETAIN-01",
-        ],
-        &hits,
-    );
-    crate::cover::require(hits);
     check_eq!(n, (states.len() * ops.len()) as u64, "every case checked");
+    hits
 }
 
 /// The rules on the real 8-bit clock for the TON bank's 32-bit path is `kani_iec_ton_rules`; here
 /// every START x now x PT of a running TON, TP, TOF and TONR on `u8` (IEC-WRAP-01 at every
-/// wrap), with IN held.
+/// wrap), with IN held; for `TIME` (ms clock) and `LTIME` (ns clock).
 // Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
 #[cfg(not(kani))]
 #[test]
 fn exhaustive_u8_wrap_rules() {
-    crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], || {
-        for kind in IecKind::ALL {
-            let input = kind != IecKind::Tof;
-            for start in (0..=255u8).step_by(3) {
-                for pt in [0u8, 1, 2, 127, 128, 200, 254, 255] {
-                    let st = IecState {
-                        kind: Some(kind),
-                        input,
-                        running: true,
-                        start,
-                        pt,
-                        et: 0,
-                        q: q_while(kind),
-                    };
-                    for now in 0..=511u64 {
-                        let op = Op::Call(
-                            kind,
-                            CpuTime::from_millis(now),
-                            IecInput::new(input, Time::from_millis(9)),
-                        );
-                        check!(prop_iec_rules::<u8, AllKindCovers>(st, op));
-                    }
+    // Each data type's run reaches both rules and every cover of its own.
+    for run in [wrap_rules_u8::<Time> as fn(), wrap_rules_u8::<LTime>] {
+        crate::cover::check_only(&["IEC-WRAP-01", "IEC-EXPIRY-01"], run);
+    }
+}
+
+/// The body of [`exhaustive_u8_wrap_rules`] for the data type `D`.
+#[cfg(not(kani))]
+fn wrap_rules_u8<D: IecDuration>() {
+    for kind in IecKind::ALL {
+        let input = kind != IecKind::Tof;
+        for start in (0..=255u8).step_by(3) {
+            for pt in [0u8, 1, 2, 127, 128, 200, 254, 255] {
+                let st = IecState {
+                    kind: Some(kind),
+                    input,
+                    running: true,
+                    start,
+                    pt,
+                    et: 0,
+                    q: q_while(kind),
+                };
+                for now in 0..=511u64 {
+                    let op = Op::Call(
+                        kind,
+                        CpuTime::from_ticks(now),
+                        IecInput::new(input, preset_of::<D>(9)),
+                    );
+                    check!(prop_iec_rules::<u8, D, AllKindCovers>(st, op));
                 }
             }
         }
-    });
+    }
 }
 
-/// `op` moved to `before` ms before PT (at least 0 ms after START) when it is a call or a read:
-/// with `before` 0 and 1, the instants at which a running timer `st` expires or is about to,
-/// which random 32-bit times almost never reach. Harnesses run them beside each random case
-/// under `cargo test` (Kani covers them with the rest).
-pub fn near_expiry(st: IecState<u32>, op: Op, before: u64) -> Op {
-    let at = |_: CpuTime| {
-        CpuTime::from_millis(u64::from(st.start) + u64::from(st.pt) - before.min(u64::from(st.pt)))
-    };
+/// `op` moved to `before` clock units (ms or ns) before PT (at least 0 after START) when it is a
+/// call or a read: with `before` 0 and 1, the instants at which a running timer `st` expires or
+/// is about to, which random full-width times almost never reach. Harnesses run them beside
+/// each random case under `cargo test` (Kani covers them with the rest).
+pub fn near_expiry<C: ClockWord, D: IecDuration>(st: IecState<C>, op: Op<D>, before: u64) -> Op<D> {
+    let pt = st.pt.to_u64();
+    // On the 64-bit clock START + PT may pass 2^64: the CPU time wraps with the clock there.
+    let at = |_| CpuTime::from_ticks(st.start.to_u64().wrapping_add(pt - before.min(pt)));
     match op {
         Op::Call(kind, now, input) => Op::Call(kind, at(now), input),
         Op::ReadQ(now) => Op::ReadQ(at(now)),
@@ -1522,57 +1598,95 @@ pub fn near_expiry(st: IecState<u32>, op: Op, before: u64) -> Op {
     }
 }
 
-/// The body of the per-kind harnesses: `st` and `op` made of `kind` (a state of another kind
-/// becomes one of this kind, a call one of this kind; PT and ET within the TIME range), every
-/// IEC rule with the kind covers `K`, the structure's layout; under `cargo test` also the same
-/// case at PT and one ms before it ([`near_expiry`]).
-pub fn iec_rules_case<K: KindCovers>(kind: IecKind, st: IecState<u32>, op: Op) {
-    let st = IecState {
-        kind: st.kind.map(|_| kind),
-        pt: st.pt.min(i32::MAX as u32),
-        et: st.et.min(st.pt.min(i32::MAX as u32)),
+/// A data type on its full-width clock, in the structure of its manual: `TIME` in `IEC_TIMER`
+/// (32-bit ms clock), `LTIME` in `IEC_LTIMER` (64-bit ns clock); the generic harnesses run over
+/// it.
+pub trait FullWidth: IecDuration {
+    /// The layout property of the structure holding `state` (IEC-STRUCT-01, LTIMER-STRUCT-01).
+    fn prop_layout(state: IecState<Self::Clock>);
+}
+
+impl FullWidth for Time {
+    fn prop_layout(state: IecState<u32>) {
+        prop_struct(state);
+    }
+}
+
+impl FullWidth for LTime {
+    fn prop_layout(state: IecState<u64>) {
+        ltimer_struct_01(state);
+    }
+}
+
+/// `st` with PT and ET within the range of `D` (a latched preset is a non-negative `D`).
+pub fn within_range<D: IecDuration>(st: IecState<D::Clock>) -> IecState<D::Clock> {
+    let top = <D::Clock as ClockWord>::from_u64_wrapping(D::MAX.units());
+    IecState {
+        pt: st.pt.min(top),
+        et: st.et.min(st.pt.min(top)),
         ..st
-    };
+    }
+}
+
+/// The body of the per-kind harnesses: `st` and `op` made of `kind` (a state of another kind
+/// becomes one of this kind, a call one of this kind; PT and ET within the range of `D`), every
+/// IEC rule with the kind covers `K`, the structure's layout; under `cargo test` also the same
+/// case at PT and one clock unit before it ([`near_expiry`]).
+pub fn iec_rules_case<D: FullWidth, K: KindCovers>(
+    kind: IecKind,
+    st: IecState<D::Clock>,
+    op: Op<D>,
+) {
+    let st = within_range::<D>(IecState {
+        kind: st.kind.map(|_| kind),
+        ..st
+    });
     let op = match op {
         Op::Call(_, now, input) => Op::Call(kind, now, input),
         other => other,
     };
-    prop_iec_rules::<u32, K>(st, op);
-    prop_struct(st);
+    prop_iec_rules::<D::Clock, D, K>(st, op);
+    D::prop_layout(st);
     #[cfg(not(kani))]
     for before in [0, 1] {
-        prop_iec_rules::<u32, K>(st, near_expiry(st, op, before));
+        prop_iec_rules::<D::Clock, D, K>(st, near_expiry(st, op, before));
     }
 }
 
 macro_rules! iec_rules_harness {
-    ($name:ident, $kind:expr, $covers:ty) => {
-        /// Every IEC rule for one kind on the 32-bit clock (`prop_iec_rules`: the reference, the
-        /// structure, its array forms and, for TON, a one-timer bank; the metamorphic reruns)
-        /// and the structure's layout. Symbolic: the state (any valid one, of this kind or none,
-        /// PT and ET within the TIME range), the operation (a call of this kind at any time with
-        /// any IN and PT, a read of Q or ET at any time, RT, a PT coil with any TIME,
-        /// RUN-STOP-RUN). `#[kani::unwind(17)]`: the TON bank's scan runs its group code on a
-        /// padded copy of 16 timers, and so does `ton_array` (loops of 16 iterations and the exit, the
-        /// largest); the loop over the 5 implementations is shorter. The kind is a constant, so each harness
-        /// holds one kind's branches only, and its kind's covers only ([`KindCovers`]).
+    ($name:ident, $data:ty, $kind:expr, $covers:ty) => {
+        /// Every IEC rule for one kind and data type on its full-width clock (`prop_iec_rules`:
+        /// the reference, the structure, its array forms and, for TON on `TIME`, a one-timer
+        /// bank; the metamorphic reruns) and the structure's layout ([`FullWidth`]). Symbolic:
+        /// the state (any valid one, of this kind or none, PT and ET within the data type's
+        /// range), the operation (a call of this kind at any time with any IN and PT, a read of
+        /// Q or ET at any time, RT, a PT coil with any value of the data type, RUN-STOP-RUN).
+        /// `#[kani::unwind(17)]`: the TON bank's scan runs its group code on a padded copy of
+        /// 16 timers, and so does `ton_array` (loops of 16 iterations and the exit, the
+        /// largest; on `LTIME` the bank is not called); the loop over the 5 implementations is
+        /// shorter. The kind is a constant, so each harness holds one kind's branches only,
+        /// and its kind's covers only ([`KindCovers`]).
         #[test]
         #[cfg_attr(kani, kani::proof, kani::unwind(17))]
         fn $name() {
             crate::cover::harness(concat!(module_path!(), "::", stringify!($name)), || {
                 bolero::check!()
-                    .with_type::<(IecState<u32>, Op)>()
+                    .with_type::<(IecState<<$data as IecDuration>::Clock>, Op<$data>)>()
                     .with_iterations(5_000)
-                    .for_each(|&(st, op)| iec_rules_case::<$covers>($kind, st, op));
+                    .for_each(|&(st, op)| iec_rules_case::<$data, $covers>($kind, st, op));
             });
         }
     };
 }
 
-iec_rules_harness!(kani_iec_tp_rules, IecKind::Tp, TpCovers);
-iec_rules_harness!(kani_iec_ton_rules, IecKind::Ton, TonCovers);
-iec_rules_harness!(kani_iec_tof_rules, IecKind::Tof, TofCovers);
-iec_rules_harness!(kani_iec_tonr_rules, IecKind::Tonr, TonrCovers);
+iec_rules_harness!(kani_iec_tp_rules, Time, IecKind::Tp, TpCovers);
+iec_rules_harness!(kani_iec_ton_rules, Time, IecKind::Ton, TonCovers);
+iec_rules_harness!(kani_iec_tof_rules, Time, IecKind::Tof, TofCovers);
+iec_rules_harness!(kani_iec_tonr_rules, Time, IecKind::Tonr, TonrCovers);
+iec_rules_harness!(kani_ltimer_tp_rules, LTime, IecKind::Tp, TpCovers);
+iec_rules_harness!(kani_ltimer_ton_rules, LTime, IecKind::Ton, TonCovers);
+iec_rules_harness!(kani_ltimer_tof_rules, LTime, IecKind::Tof, TofCovers);
+iec_rules_harness!(kani_ltimer_tonr_rules, LTime, IecKind::Tonr, TonrCovers);
 
 /// Issue 39's case: the TON harness's body with TP's covers (as when every kind's harness held
 /// every kind's covers) fails its harness with TP-RETRIGGER-01's cover, which no TON call
@@ -1587,7 +1701,7 @@ fn another_kinds_cover_fails_the_harness() {
         bolero::check!()
             .with_type::<(IecState<u32>, Op)>()
             .with_iterations(5_000)
-            .for_each(|&(st, op)| iec_rules_case::<TpCovers>(IecKind::Ton, st, op));
+            .for_each(|&(st, op)| iec_rules_case::<Time, TpCovers>(IecKind::Ton, st, op));
     });
 }
 
@@ -1662,49 +1776,88 @@ fn wrap_gap_boundaries() {
     });
 }
 
-/// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock. Symbolic: the three
-/// operations (each any call, read, coil or RUN-STOP-RUN, with any time, IN and PT).
+/// IEC-EQUIV-02 over three operations from power-up, the body of the harnesses of both data
+/// types on their full-width clocks.
+fn sequence_equivalence_harness<D: FullWidth>()
+where
+    Op<D>: bolero::TypeGenerator,
+{
+    bolero::check!()
+        .with_type::<[Op<D>; 3]>()
+        .with_iterations(20_000)
+        .for_each(|ops| prop_sequence_equivalence::<D::Clock, D>(ops));
+}
+
+/// IEC-EQUIV-02 over three operations from power-up on the 32-bit clock (`TIME`). Symbolic: the
+/// three operations (each any call, read, coil or RUN-STOP-RUN, with any time, IN and PT).
 /// `#[kani::unwind(4)]`: the loop over the 3 operations and its exit.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(4))]
 fn kani_sequence_equivalence() {
     crate::cover::harness(
         concat!(module_path!(), "::", stringify!(kani_sequence_equivalence)),
-        || {
-            bolero::check!()
-                .with_type::<[Op; 3]>()
-                .with_iterations(20_000)
-                .for_each(|ops| prop_sequence_equivalence::<u32>(ops));
-        },
+        sequence_equivalence_harness::<Time>,
     );
 }
 
-/// IEC-STRUCT-01 one step on the 32-bit clock. Symbolic: the state (PT and ET within the TIME
-/// range) and the operation. No loop.
+/// IEC-EQUIV-02 over three operations from power-up on the 64-bit nanosecond clock (`LTIME`,
+/// `IEC_LTIMER`). Symbolic: the three operations (each any call, read, coil or RUN-STOP-RUN,
+/// with any time, IN and PT). `#[kani::unwind(4)]`: the loop over the 3 operations and its exit.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(4))]
+fn kani_ltimer_sequence_equivalence() {
+    crate::cover::harness(
+        concat!(
+            module_path!(),
+            "::",
+            stringify!(kani_ltimer_sequence_equivalence)
+        ),
+        sequence_equivalence_harness::<LTime>,
+    );
+}
+
+/// IEC-STRUCT-01 one step, the body of the harnesses of both data types on their full-width
+/// clocks: the state (PT and ET within the data type's range) and the operation.
+fn step_equivalence_harness<D: FullWidth>()
+where
+    (IecState<D::Clock>, Op<D>): bolero::TypeGenerator,
+{
+    bolero::check!()
+        .with_type::<(IecState<D::Clock>, Op<D>)>()
+        .with_iterations(20_000)
+        .for_each(|&(st, op)| {
+            let st = within_range::<D>(st);
+            prop_step_equivalence(st, op);
+            prop_invariants(st, op);
+            if let Op::Call(kind, now, input) = op {
+                prop_table_8_20(st, kind, now, input, preset_of::<D>(7));
+            }
+        });
+}
+
+/// IEC-STRUCT-01 one step on the 32-bit clock (`TIME`). Symbolic: the state (PT and ET within
+/// the TIME range) and the operation. No loop.
 #[test]
 #[cfg_attr(kani, kani::proof)]
 fn kani_step_equivalence() {
     crate::cover::harness(
         concat!(module_path!(), "::", stringify!(kani_step_equivalence)),
-        || {
-            crate::cover::check_ids(&["IEC-STRUCT-01"], || {
-                bolero::check!()
-                    .with_type::<(IecState<u32>, Op)>()
-                    .with_iterations(20_000)
-                    .for_each(|&(st, op)| {
-                        let st = IecState {
-                            pt: st.pt.min(i32::MAX as u32),
-                            et: st.et.min(st.pt.min(i32::MAX as u32)),
-                            ..st
-                        };
-                        prop_step_equivalence(st, op);
-                        prop_invariants(st, op);
-                        if let Op::Call(kind, now, input) = op {
-                            prop_table_8_20(st, kind, now, input, Time::from_millis(7));
-                        }
-                    });
-            });
-        },
+        || crate::cover::check_ids(&["IEC-STRUCT-01"], step_equivalence_harness::<Time>),
+    );
+}
+
+/// IEC-STRUCT-01 one step on the 64-bit nanosecond clock (`LTIME`, `IEC_LTIMER`). Symbolic: the
+/// state (PT and ET within the LTIME range) and the operation. No loop.
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_ltimer_step_equivalence() {
+    crate::cover::harness(
+        concat!(
+            module_path!(),
+            "::",
+            stringify!(kani_ltimer_step_equivalence)
+        ),
+        || crate::cover::check_ids(&["IEC-STRUCT-01"], step_equivalence_harness::<LTime>),
     );
 }
 
@@ -1755,4 +1908,384 @@ fn kani_ton_bank() {
             });
         },
     );
+}
+
+// ---------------------------------------------------------------------------------------------
+// The S7-1500 long timers (LTIME, IEC_LTIMER): the rules of their own. The rules they share with
+// the TIME timers run on them above (the drivers and harnesses over both data types).
+// ---------------------------------------------------------------------------------------------
+
+use plc_timers::iec::{IecLTimer, IecLTimerRef};
+use plc_timers::time::Nanos;
+
+/// LTIMER-STRUCT-01: `IEC_LTIMER` is 32 bytes, `#[repr(C)]` with START, PT, ET (8 bytes of
+/// nanoseconds each) at offsets 0, 8 and 16 and the flags at 24 (the same flag byte as
+/// `IEC_TIMER`'s, then three zero bytes); a structure holds exactly the valid states and maps
+/// back to them.
+pub fn ltimer_struct_01(state: IecState<u64>) {
+    check_eq!(
+        core::mem::size_of::<IecLTimer>(),
+        32,
+        "LTIMER-STRUCT-01: 32 bytes"
+    );
+    check_eq!(
+        core::mem::align_of::<IecLTimer>(),
+        8,
+        "LTIMER-STRUCT-01: aligned as its 8-byte members"
+    );
+    let Some(t) = IecLTimer::from_state(state) else {
+        check!(
+            !state.is_valid(),
+            "LTIMER-STRUCT-01: every valid state has a structure"
+        );
+        return;
+    };
+    // The structure's first 28 bytes are its members (the last 4 are padding, never read): read
+    // through a pointer, since the members are private and the layout is what is checked.
+    // SAFETY: `t` is a live, initialized `IecLTimer` of 32 bytes whose bytes 0..28 are its
+    // fields (START, PT, ET, the flag byte, three zero bytes), so every byte read is initialized;
+    // `[u8; 28]` has alignment 1.
+    let bytes: [u8; 28] = unsafe { core::ptr::read(core::ptr::from_ref(&t).cast::<[u8; 28]>()) };
+    check_eq!(
+        bytes[0..8],
+        state.start.to_ne_bytes(),
+        "LTIMER-STRUCT-01: START (ns) at offset 0"
+    );
+    check_eq!(
+        bytes[8..16],
+        state.pt.to_ne_bytes(),
+        "LTIMER-STRUCT-01: PT (ns) at offset 8"
+    );
+    check_eq!(
+        bytes[16..24],
+        state.et.to_ne_bytes(),
+        "LTIMER-STRUCT-01: ET (ns) at offset 16"
+    );
+    // The flags of the same state in IEC_TIMER (its members zeroed: a valid state there too).
+    let flags = IecState {
+        start: 0u32,
+        pt: 0,
+        et: 0,
+        ..IecState::default()
+    };
+    let flags = IecState {
+        kind: state.kind,
+        input: state.input,
+        running: state.running,
+        q: state.q,
+        ..flags
+    };
+    let flag_byte = plc_timers::iec::IecTimer::from_state(flags)
+        .expect("valid")
+        .to_bytes()[12];
+    check_eq!(
+        bytes[24],
+        flag_byte,
+        "LTIMER-STRUCT-01: the flags at offset 24, as in IEC_TIMER"
+    );
+    check_eq!(
+        bytes[25..],
+        [0; 3],
+        "LTIMER-STRUCT-01: zero after the flags"
+    );
+    check_eq!(
+        t.state(),
+        state,
+        "LTIMER-STRUCT-01: the abstraction inverts from_state"
+    );
+    check_eq!(
+        (t.pt(), t.et()),
+        (state.pt, state.et),
+        "LTIMER-STRUCT-01: PT and ET read the members"
+    );
+}
+
+/// The bolero harness of LTIMER-STRUCT-01. Symbolic: the state (any valid one). No loop.
+#[test]
+#[cfg_attr(kani, kani::proof)]
+fn kani_ltimer_struct() {
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ltimer_struct)),
+        || {
+            crate::cover::check_ids(&["LTIMER-STRUCT-01"], || {
+                bolero::check!()
+                    .with_type::<IecState<u64>>()
+                    .with_iterations(20_000)
+                    .for_each(|&st| ltimer_struct_01(st));
+            });
+        },
+    );
+}
+
+/// The values of the S7-1500's nanosecond clock, 0..2^64, as a mask: a value modulo 2^64 is
+/// the value and the mask (no division, which Kani handles badly).
+const NS_CLOCK: u128 = (1 << 64) - 1;
+
+/// LTIMER-CLOCK-01: on the 64-bit nanosecond clock that wraps at 2^64, a TON started at `t0` ns
+/// and updated `gap` ns later (the clock then reads `t0 + gap` modulo 2^64) shows ET =
+/// min(gap, PT) and Q = (gap >= PT) for every gap below 2^64: a gap of 2^63 ns or more, past the
+/// largest PT, has run out; on the reference and on `IEC_LTIMER`. The clock's reading and the
+/// elapsed time are computed here in u128.
+#[covers]
+pub fn ltimer_clock_01(t0: u64, gap: u64, pt: i64) {
+    let pt = LTime::from_nanos(pt);
+    let now = u64::try_from((u128::from(t0) + u128::from(gap)) & NS_CLOCK).expect("mod 2^64");
+    let elapsed = (u128::from(now) + (NS_CLOCK + 1) - u128::from(t0)) & NS_CLOCK;
+    let pt_ns = u128::try_from(pt.as_nanos().max(0)).expect("non-negative");
+    let mut r = IecLTimerRef::default();
+    let mut s = IecLTimer::new();
+    for t in [&mut r as &mut dyn IecTimerOps<u64, LTime>, &mut s] {
+        let start = CpuTime::<Nanos>::from_nanos(t0);
+        t.call(IecKind::Ton, start, IecInput::new(true, pt));
+        let o = t.call(
+            IecKind::Ton,
+            CpuTime::from_nanos(now),
+            IecInput::new(true, pt),
+        );
+        check_eq!(
+            (o.q, u128::from(o.et)),
+            (elapsed >= pt_ns, elapsed.min(pt_ns)),
+            "LTIMER-CLOCK-01: a gap of {gap} ns from {t0} ns shows ET = min(gap mod 2^64, PT)"
+        );
+        if gap >= 1 << 63 {
+            check!(
+                o.q && u128::from(o.et) == pt_ns,
+                "LTIMER-CLOCK-01: a gap of 2^63 ns or more has run out (ET = PT, Q = 1)"
+            );
+        }
+    }
+    cover!(gap >= 1 << 63, "LTIMER-CLOCK-01: a gap of 2^63 ns or more");
+    cover!(
+        now < t0,
+        "LTIMER-CLOCK-01: the clock wrapped at 2^64 since START"
+    );
+    cover!(
+        u128::from(gap) < pt_ns,
+        "LTIMER-CLOCK-01: still timing after the gap"
+    );
+}
+
+/// The bolero harness of LTIMER-CLOCK-01. Symbolic: the start time, the gap (once any `u64`,
+/// once below 2^40 ns) and PT (any LTIME). No loop but the two implementations:
+/// `#[kani::unwind(3)]` (2 and the exit).
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(3))]
+fn kani_ltimer_clock() {
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ltimer_clock)),
+        || {
+            bolero::check!()
+                .with_type::<(u64, u64, i64)>()
+                .with_iterations(20_000)
+                .for_each(|&(t0, gap, pt)| {
+                    ltimer_clock_01(t0, gap >> 24, pt);
+                    ltimer_clock_01(t0, gap, pt);
+                });
+        },
+    );
+}
+
+/// LTIMER-CLOCK-01 at the boundaries: gaps 2^63 - 1, 2^63, 2^64 - 1 against PT 0, 1, the
+/// largest LTIME, and starts that make the clock wrap.
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
+#[test]
+fn ltimer_clock_boundaries() {
+    crate::cover::check_ids(&["LTIMER-CLOCK-01"], || {
+        for t0 in [0, 12_345, u64::MAX - 1, u64::MAX] {
+            for gap in [0, 1, (1 << 63) - 1, 1 << 63, u64::MAX - 1, u64::MAX] {
+                for pt in [-1, 0, 1, i64::MAX - 1, i64::MAX] {
+                    ltimer_clock_01(t0, gap, pt);
+                }
+            }
+        }
+    });
+}
+
+/// Nanoseconds per millisecond: the scale between the TIME and the LTIME timers.
+const NS_PER_MS: u64 = 1_000_000;
+
+/// A TIME operation as the same operation in nanoseconds on LTIME: its time and PT x 10^6.
+fn in_nanos(op: Op<Time>) -> Op<LTime> {
+    let t = |now: CpuTime| CpuTime::<Nanos>::from_nanos(now.as_millis() * NS_PER_MS);
+    let pt = |pt: Time| LTime::from_nanos(i64::from(pt.as_millis()) * NS_PER_MS as i64);
+    match op {
+        Op::Call(kind, now, i) => Op::Call(
+            kind,
+            t(now),
+            IecInput {
+                input: i.input,
+                pt: pt(i.pt),
+                reset: i.reset,
+            },
+        ),
+        Op::ReadQ(now) => Op::ReadQ(t(now)),
+        Op::ReadEt(now) => Op::ReadEt(t(now)),
+        Op::Rt => Op::Rt,
+        Op::PtCoil(p) => Op::PtCoil(pt(p)),
+        Op::RunStopRun(retentive) => Op::RunStopRun(retentive),
+    }
+}
+
+/// A TIME timer's state with its clock values in nanoseconds.
+fn state_in_nanos(s: IecState<u32>) -> IecState<u64> {
+    let ns = |ms: u32| u64::from(ms) * NS_PER_MS;
+    IecState {
+        kind: s.kind,
+        input: s.input,
+        running: s.running,
+        start: ns(s.start),
+        pt: ns(s.pt),
+        et: ns(s.et),
+        q: s.q,
+    }
+}
+
+/// `op` at a time not before `clock` and below 2^32 ms (where the TIME timer's 32-bit clock
+/// does not wrap, so that both data types represent every time and duration of the trace);
+/// `clock` becomes that time.
+fn forward(op: Op<Time>, clock: &mut u64) -> Op<Time> {
+    let mut at = |now: CpuTime| {
+        *clock = (now.as_millis() & 0xFFFF_FFFF).max(*clock);
+        CpuTime::from_millis(*clock)
+    };
+    match op {
+        Op::Call(kind, now, i) => Op::Call(kind, at(now), i),
+        Op::ReadQ(now) => Op::ReadQ(at(now)),
+        Op::ReadEt(now) => Op::ReadEt(at(now)),
+        other => other,
+    }
+}
+
+/// LTIMER-SAME-01: TP, TON, TOF and TONR on LTIME follow the TIME rules. From power-up, the
+/// trace `ops` (box calls, reads, coils, RUN-STOP-RUN; its times made non-decreasing and below
+/// 2^32 ms by [`forward`], where both data types represent them) run on the TIME reference in
+/// ms and, scaled to ns, on the LTIME reference and on `IEC_LTIMER`: at every step Q is the
+/// same and ET and every clock member in ns is the TIME timer's in ms x 10^6. The TIME timer is
+/// the oracle, independent of the LTIME code path through its data type and unit.
+#[covers]
+pub fn ltimer_same_01(ops: &[Op<Time>]) {
+    let mut time = IecTimerRef::new();
+    let mut reference = IecLTimerRef::default();
+    let mut structure = IecLTimer::new();
+    let mut clock = 0;
+    for (k, &op) in ops.iter().enumerate() {
+        let op = forward(op, &mut clock);
+        let before = time.state();
+        let (q, et) = apply(&mut time, op);
+        let want = ((q, u64::from(et) * NS_PER_MS), state_in_nanos(time.state()));
+        let ns = in_nanos(op);
+        let by_ref = apply(&mut reference, ns);
+        let by_struct = apply(&mut structure, ns);
+        check_eq!(
+            (by_ref, reference.state()),
+            want,
+            "LTIMER-SAME-01: the LTIME reference in ns = the TIME timer in ms x 10^6 at step {k} of {ops:?}"
+        );
+        check_eq!(
+            (by_struct, structure.state()),
+            want,
+            "LTIMER-SAME-01: IEC_LTIMER in ns = the TIME timer in ms x 10^6 at step {k} of {ops:?}"
+        );
+        let after = time.state();
+        cover!(
+            before.running && !after.running && after.pt > 0 && after.et == after.pt,
+            "LTIMER-SAME-01: a timer runs out in the trace"
+        );
+        cover!(
+            before.running && after.running && after.et > before.et,
+            "LTIMER-SAME-01: a timer keeps timing across a step"
+        );
+    }
+}
+
+/// LTIMER-SAME-01, bounded exhaustive: every trace of 3 operations from the 168-operation
+/// alphabet of [`sequence_ops_u4`] (times 0, 2, 7, 14 ms, PT -1, 0, 5, 15 ms, reads, coils,
+/// RUN-STOP-RUN: 168^3 traces, every shorter one a prefix), on the full-width timers (32-bit ms
+/// clock for TIME, 64-bit ns clock for LTIME). Small scope: the rules compare elapsed times
+/// with PT and 0 and copy the clock into START, which these times and presets order in every
+/// way (below, at, past PT; PT 0 and negative); the times and presets of the full range are the
+/// harness's (`kani_ltimer_same`).
+// Uses the cover recorder, which exists outside Kani only (proofs/cover.rs).
+#[cfg(not(kani))]
+#[test]
+fn exhaustive_ltimer_same() {
+    let alphabet = sequence_ops_u4::<Time>();
+    let n = crate::cover::check_ids(&["LTIMER-SAME-01"], || {
+        let mut n = 0u64;
+        for &a in &alphabet {
+            for &b in &alphabet {
+                for &c in &alphabet {
+                    ltimer_same_01(&[a, b, c]);
+                    n += 1;
+                }
+            }
+        }
+        n
+    });
+    check_eq!(n, 168 * 168 * 168, "every trace checked");
+}
+
+/// The bolero harness of LTIMER-SAME-01: 4 operations from power-up, any times (made
+/// non-decreasing below 2^32 ms), IN, R, PT (any TIME). `#[kani::unwind(5)]`: the loop over the
+/// 4 operations and its exit.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(5))]
+fn kani_ltimer_same() {
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ltimer_same)),
+        || {
+            bolero::check!()
+                .with_type::<[Op<Time>; 4]>()
+                .with_iterations(20_000)
+                .for_each(|ops| ltimer_same_01(ops));
+        },
+    );
+}
+
+/// IEC-STRUCT-01 on the 64-bit nanosecond clock: the TON array forms keep the upper 32 bits of
+/// START and ET. They once cleared them (a 32-bit mask zero-extended), which no clock of 32 bits
+/// or fewer can show; `kani_ltimer_ton_rules` found it with this case.
+#[test]
+fn ltimer_ton_arrays_keep_upper_clock_bits() {
+    let st = IecState {
+        kind: None,
+        input: true,
+        running: true,
+        start: 1u64 << 56,
+        pt: 1,
+        et: 1,
+        q: true,
+    };
+    let op = Op::Call(
+        IecKind::Ton,
+        CpuTime::from_nanos(1 << 56),
+        IecInput::new(true, LTime::ZERO).with_reset(true),
+    );
+    check!(prop_iec_rules::<u64, LTime, AllKindCovers>(st, op));
+    // From power-up: a TON started past 2^32 ns and read 2^33 ns later.
+    let pt = LTime::from_nanos(1 << 40);
+    let mut reference = IecLTimerRef::default();
+    let mut array = [IecLTimer::new()];
+    for now in [5 << 32, 7 << 32] {
+        let want = reference.call(
+            IecKind::Ton,
+            CpuTime::from_nanos(now),
+            IecInput::new(true, pt),
+        );
+        let (mut q, mut et) = ([true], [0]);
+        IecTimerOf::ton_array(
+            &mut array,
+            CpuTime::from_nanos(now),
+            &[true],
+            &[pt],
+            &mut q,
+            &mut et,
+        );
+        check_eq!(
+            ((q[0], et[0]), array[0].state()),
+            ((want.q, want.et), reference.state()),
+            "IEC-STRUCT-01: ton_array on the 64-bit clock at {now} ns"
+        );
+    }
 }

@@ -20,6 +20,7 @@ mod cover;
 
 mod counter;
 mod decisions;
+mod domain;
 mod explain;
 mod iec;
 mod s5;

@@ -7,6 +7,7 @@
 //! skipping every case.
 
 use crate::cover::{check, check_eq};
+use crate::domain::s5_timer_inputs;
 use std::thread;
 
 use plc_timers::s5::reference::is_on_delay;
@@ -264,16 +265,8 @@ fn tvs() -> Vec<S5Time> {
 fn for_all_inputs(mut f: impl FnMut(u64, S5Input)) {
     for tv in tvs() {
         for ticks in TICKS {
-            for bits in 0..8u8 {
-                f(
-                    ticks,
-                    S5Input {
-                        s: bits & 1 != 0,
-                        r: bits & 2 != 0,
-                        fr: bits & 4 != 0,
-                        tv,
-                    },
-                );
+            for input in s5_timer_inputs(tv) {
+                f(ticks, input);
             }
         }
     }
@@ -1537,13 +1530,8 @@ fn exhaustive_s5_rules() {
                             };
                             for ticks in RULE_TICKS {
                                 for tv in tvs() {
-                                    for bits in 0..8u8 {
-                                        let input = S5Input {
-                                            s: bits & 1 != 0,
-                                            r: bits & 2 != 0,
-                                            fr: bits & 4 != 0,
-                                            tv,
-                                        };
+                                    for (bits, input) in s5_timer_inputs(tv).into_iter().enumerate()
+                                    {
                                         let c = S5Case {
                                             kind,
                                             state,

@@ -460,10 +460,11 @@ fn reached<C: ClockWord>(elapsed: C, pt: C) -> bool {
 }
 
 /// `c` where `mask` is all ones, 0 where it is 0 (an `and` instead of a conditional move, which
-/// needs a register holding 0).
+/// needs a register holding 0). The mask is sign-extended to 64 bits: zero-extended, it would
+/// clear the upper half of a 64-bit clock word (the `LTIME` clock).
 #[inline(always)]
 fn masked<C: ClockWord>(c: C, mask: u32) -> C {
-    C::from_u64_wrapping(c.to_u64() & u64::from(mask))
+    C::from_u64_wrapping(c.to_u64() & i64::from(mask as i32) as u64)
 }
 
 impl<C: ClockWord, D: IecDuration> IecTimerOf<C, D> {
