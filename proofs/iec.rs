@@ -2289,3 +2289,186 @@ fn ltimer_ton_arrays_keep_upper_clock_bits() {
         );
     }
 }
+
+/// The box calls and coils of [`s71500_same_01`]'s driver on the 4-bit clock: every kind at
+/// the times 0, 4, 9 and 15 (one clock period), IN 0 and 1, PT 0, 5 and 15, R 0 and 1 for TONR;
+/// the RT coil; RUN-STOP-RUN, retentive or not. No `-(PT)-` coil: see
+/// [`pt_coil_between_call_and_read_is_visible`].
+fn s71500_ops<D: IecDuration>() -> Vec<Op<D>> {
+    let mut ops = vec![Op::Rt, Op::RunStopRun(false), Op::RunStopRun(true)];
+    for kind in IecKind::ALL {
+        for t in [0, 4, 9, 15] {
+            for on in [false, true] {
+                for pt in [0, 5, 15] {
+                    let resets: &[bool] = if kind == IecKind::Tonr {
+                        &[false, true]
+                    } else {
+                        &[false]
+                    };
+                    for &r in resets {
+                        let pt = D::from_units(pt).expect("a small preset");
+                        let input = IecInput::new(on, pt).with_reset(r);
+                        ops.push(Op::Call(kind, CpuTime::from_ticks(t), input));
+                    }
+                }
+            }
+        }
+    }
+    ops
+}
+
+/// The time of an operation, if it has one.
+fn time_of<D: IecDuration>(op: Op<D>) -> Option<u64> {
+    match op {
+        Op::Call(_, now, _) | Op::ReadQ(now) | Op::ReadEt(now) => Some(now.ticks()),
+        _ => None,
+    }
+}
+
+/// S71500-SAME-01: reads through the structure are invisible. From power-up, the operations
+/// `ops` (box calls of one instruction and coils, times non-decreasing within one clock
+/// period) give the same
+/// output at every box call whether or not the read `read` is inserted before `ops[at]` (at a
+/// time between its neighbours'): the S7-1500's deferred update (done at the next read) and the
+/// update at every call give the same outputs. The oracle is the run without the read, on the
+/// same implementation; both the reference and the structure are checked.
+#[covers]
+pub fn s71500_same_01<D: IecDuration>(ops: &[Op<D>], read: Op<D>, at: usize) {
+    fn run<D: IecDuration, T: IecTimerOps<U4, D> + Default>(ops: &[Op<D>], read: Op<D>, at: usize) {
+        let (mut plain, mut with_read) = (T::default(), T::default());
+        for (k, &op) in ops.iter().enumerate() {
+            if k == at {
+                let before = with_read.state();
+                apply(&mut with_read, read);
+                cover!(
+                    before.running && with_read.state() != before,
+                    "S71500-SAME-01: the inserted read updates a running timer"
+                );
+                cover!(
+                    before.running && !with_read.state().running,
+                    "S71500-SAME-01: the inserted read finds the time run out"
+                );
+            }
+            let a = apply(&mut plain, op);
+            let b = apply(&mut with_read, op);
+            if let Op::Call(..) = op {
+                check_eq!(
+                    b,
+                    a,
+                    "S71500-SAME-01: a read before step {at} changes the output of step {k} of {ops:?} (read {read:?})"
+                );
+            }
+        }
+    }
+    run::<D, IecTimerRef<U4, D>>(ops, read, at);
+    run::<D, IecTimerOf<U4, D>>(ops, read, at);
+}
+
+/// S71500-SAME-01, exhaustive on the 4-bit clock: every sequence of 3 operations of
+/// [`s71500_ops`] whose times are non-decreasing and whose box calls are of one instruction, with a read of Q or of ET inserted before
+/// each of its operations at every time of 0, 4, 9, 15 between its neighbours', for TIME and
+/// LTIME. Small scope: the update compares `now - START` with PT and 0, which these times and
+/// presets order in every way (below, at and past PT, PT = 0) within one period of the clock;
+/// the rule is stated for gaps below the period (a gap of a whole period aliases, IEC-WRAP-01).
+#[test]
+fn exhaustive_s71500_same_01() {
+    fn all<D: IecDuration>() -> u64 {
+        let ops = s71500_ops::<D>();
+        let mut n = 0;
+        for &a in &ops {
+            for &b in &ops {
+                for &c in &ops {
+                    let seq = [a, b, c];
+                    let times: Vec<u64> = seq.iter().filter_map(|&o| time_of(o)).collect();
+                    let kinds: Vec<IecKind> = seq
+                        .iter()
+                        .filter_map(|&o| match o {
+                            Op::Call(kind, ..) => Some(kind),
+                            _ => None,
+                        })
+                        .collect();
+                    // One instruction per structure (see `shared_structure_makes_a_read_visible`).
+                    if times.windows(2).any(|w| w[0] > w[1])
+                        || kinds.windows(2).any(|w| w[0] != w[1])
+                    {
+                        continue;
+                    }
+                    for at in 0..seq.len() {
+                        let lo = seq[..at]
+                            .iter()
+                            .rev()
+                            .find_map(|&o| time_of(o))
+                            .unwrap_or(0);
+                        let hi = seq[at..].iter().find_map(|&o| time_of(o)).unwrap_or(15);
+                        for t in [0, 4, 9, 15].into_iter().filter(|t| (lo..=hi).contains(t)) {
+                            let now = CpuTime::from_ticks(t);
+                            for read in [Op::ReadQ(now), Op::ReadEt(now)] {
+                                s71500_same_01::<D>(&seq, read, at);
+                                n += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        n
+    }
+    let n = crate::cover::check_ids(&["S71500-SAME-01"], || all::<Time>() + all::<LTime>());
+    check!(n > 1_000_000, "S71500-SAME-01: {n} sequences checked");
+}
+
+/// Where S71500-SAME-01 stops: a `-(PT)-` coil between a box call and a read. TON started at
+/// 0 with PT = 5 and called again at 7 runs out in that call (ET = 5, Q = 1); a PT coil then
+/// loads 15, and a call at 10 keeps the run-out timer. Had the call at 7 not updated (the
+/// S7-1500 skipping the update of outputs nobody reads), the update at 10 would compare 10
+/// with 15: not run out. The model updates at every call (spec/decisions.md, R22).
+#[test]
+fn pt_coil_between_call_and_read_is_visible() {
+    let at = CpuTime::from_millis;
+    let on = |pt| IecInput::new(true, Time::from_millis(pt));
+    let mut eager = IecTimerRef::<u32>::new();
+    eager.call(IecKind::Ton, at(0), on(5));
+    eager.call(IecKind::Ton, at(7), on(5));
+    eager.preset_timer(Time::from_millis(15));
+    let eager_out = eager.call(IecKind::Ton, at(10), on(15));
+    let mut deferred = IecTimerRef::<u32>::new();
+    deferred.call(IecKind::Ton, at(0), on(5));
+    deferred.preset_timer(Time::from_millis(15));
+    let deferred_out = deferred.call(IecKind::Ton, at(10), on(15));
+    check_eq!(
+        (eager_out.q, eager_out.et),
+        (true, 5),
+        "S71500-SAME-01: run out at 7"
+    );
+    check_eq!(
+        (deferred_out.q, deferred_out.et),
+        (false, 10),
+        "S71500-SAME-01: PT 15 at 10"
+    );
+}
+
+/// Where S71500-SAME-01 stops, too: a structure shared by two instructions (IEC-SHARE-01). A TP
+/// pulse of 5 started at 0 is still running when TON is called on the same structure at 9: the
+/// call's update runs as TON, whose Q is 1 once the time has run out. A read of Q at 9 before
+/// that call updates as the instruction that last ran, TP, whose Q is 0 after the pulse; the
+/// stopped timer then stays at Q = 0 under TON's call with IN still 1.
+#[test]
+fn shared_structure_makes_a_read_visible() {
+    let at = CpuTime::from_millis;
+    let on = |pt| IecInput::new(true, Time::from_millis(pt));
+    let mut without = IecTimerRef::<u32>::new();
+    without.call(IecKind::Tp, at(0), on(5));
+    let a = without.call(IecKind::Ton, at(9), on(0));
+    let mut with = IecTimerRef::<u32>::new();
+    with.call(IecKind::Tp, at(0), on(5));
+    check!(
+        !with.read_q(at(9)),
+        "S71500-SAME-01: TP's pulse is over at 9"
+    );
+    let b = with.call(IecKind::Ton, at(9), on(0));
+    check_eq!(
+        (a.q, b.q),
+        (true, false),
+        "S71500-SAME-01: the read decides under sharing"
+    );
+}

@@ -126,6 +126,14 @@ pub enum Rule {
     IEC_EQUIV_02,
     /// IEC-SHARE-01 (`spec/requirements/iec.toml`): Several instructions may share one IEC\_TIMER structure: it holds one state, and each call acts by its own instruction's rule on the members the previous call left (stored IN, START, ET, Q), whichever instruction made it: a TON called with IN = 1 after a TP that stored IN = 1 sees no rising edge; a TONR takes a Q of 1 left by a TOF as its own expiry; a read through the structure updates by the rule of the instruction that executed last.
     IEC_SHARE_01,
+    /// LTIMER-STRUCT-01 (`spec/requirements/iec.toml`): On the S7-1500 the instance of TP, TON, TOF or TONR is of the data type IEC\_TIMER or the instruction's TP\_TIME ... TONR\_TIME (PT and ET TIME), or IEC\_LTIMER or TP\_LTIME, TON\_LTIME, TOF\_LTIME, TONR\_LTIME (PT and ET LTIME); each LTIME instance type is one structure, the IEC\_LTIMER. The optimized IEC\_LTIMER is 32 bytes, #\[repr(C)\], aligned to 8: START, PT and ET as 64-bit nanosecond words, then one flag byte (stored IN, Q, running, last instruction) and padding that stays 0; it behaves exactly as the reference for every operation, through the abstraction function, and a saved one is restored only from bytes an operation produces.
+    LTIMER_STRUCT_01,
+    /// LTIMER-CLOCK-01 (`spec/requirements/iec.toml`): The LTIME timers run on the CPU clock read as an unsigned 64-bit count of nanoseconds: START takes its value on the starting edge, and each update computes elapsed = now - START modulo 2^64, so a timer started before the clock wraps expires correctly after it, and any gap between two updates below 2^64 ns (about 584.5 years; gaps of 2^63 ns and more included) gives the exact elapsed time; a gap of 2^64 ns or more is indistinguishable from one 2^64 ns shorter. The clock has the resolution of LTIME, one nanosecond: a preset of n ns expires in the first update at which now - START \>= n, with no rounding to a coarser tick.
+    LTIMER_CLOCK_01,
+    /// LTIMER-SAME-01 (`spec/requirements/iec.toml`): TP, TON, TOF and TONR on LTIME follow the rules of TIME unchanged, read with nanoseconds for milliseconds, the LTIME range for TIME's and LTIMER-CLOCK-01 for IEC-WRAP-01: IEC-START-01, IEC-EDGE-01, IEC-PT-LATCH-01, IEC-EXPIRY-01, IEC-ET-RANGE-01 (a negative PT is taken as 0), IEC-PT0-01, IEC-ACCESS-01, TP-IN-01, TP-RETRIGGER-01, TON-IN-01, TOF-IN-01, TONR-IN-01, TONR-RESUME-01, TONR-R-01, IEC-RT-01, IEC-PT-COIL-01, IEC-RETAIN-01, IEC-SHARE-01 (instructions sharing one IEC\_LTIMER) and IEC-EQUIV-02 (with the IEC\_LTIMER for the IEC\_TIMER). In particular a TIME trace whose gaps between updates are below 2^32 ms, run on LTIME with every time and preset scaled by 10^6, gives the same Q and the scaled ET in every call.
+    LTIMER_SAME_01,
+    /// S71500-SAME-01 (`spec/requirements/iec.toml`): On TIME, TP, TON, TOF and TONR of the S7-1500 follow the same rules as on the S7-1200 (every IEC-, TP-, TON-, TOF- and TONR- rule); the help's S7-1500 parts differ only in the instance and parameter types LTIME adds (LTIMER-STRUCT-01) and in the operands' memory areas. Where its S7-1500 text words the update differently (Q and ET are updated at a call when they are interconnected, or at an access to Q or ET, and not when neither), the outputs are the same: a box call is one whose Q and ET are read, and an update that a call skips is the one the next read performs, so reads through the structure are invisible: inserting or removing reads of Q or ET between the box calls and the RT coil and RUN-STOP-RUN of a sequence changes the output of no box call, for a structure that one instruction runs on (IEC-SHARE-01: a read updates as the instruction that last ran, so on a shared structure it can decide) and every gap below the clock's period. Across a -(PT)- coil the two texts differ: an update skipped before the coil would compare with the new preset; the crate updates at every box call, as the S7-1200 text says (a box call is one whose outputs are read).
+    S71500_SAME_01,
     /// CNT-EDGE-01 (`spec/requirements/counter.toml`): CU and CD count on a change from 0 to 1; their edge memories take the input on every call, also while R or LD holds, so releasing R with CU held does not count.
     CNT_EDGE_01,
     /// CNT-PRIO-01 (`spec/requirements/counter.toml`): R and LD are levels with priority R \> LD \> counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.
@@ -168,10 +176,10 @@ pub enum Rule {
 
 impl Rule {
     /// The number of requirements.
-    pub const COUNT: usize = 74;
+    pub const COUNT: usize = 78;
 
     /// Every requirement, in catalog order (`Rule::ALL[r as usize] == r`).
-    pub const ALL: [Rule; 74] = [
+    pub const ALL: [Rule; 78] = [
         Rule::S5T_WORD_01,
         Rule::S5T_BCD_01,
         Rule::S5T_RANGE_01,
@@ -227,6 +235,10 @@ impl Rule {
         Rule::IEC_BANK_01,
         Rule::IEC_EQUIV_02,
         Rule::IEC_SHARE_01,
+        Rule::LTIMER_STRUCT_01,
+        Rule::LTIMER_CLOCK_01,
+        Rule::LTIMER_SAME_01,
+        Rule::S71500_SAME_01,
         Rule::CNT_EDGE_01,
         Rule::CNT_PRIO_01,
         Rule::CNT_SAT_01,
@@ -306,6 +318,10 @@ impl Rule {
             Rule::IEC_BANK_01 => "IEC-BANK-01",
             Rule::IEC_EQUIV_02 => "IEC-EQUIV-02",
             Rule::IEC_SHARE_01 => "IEC-SHARE-01",
+            Rule::LTIMER_STRUCT_01 => "LTIMER-STRUCT-01",
+            Rule::LTIMER_CLOCK_01 => "LTIMER-CLOCK-01",
+            Rule::LTIMER_SAME_01 => "LTIMER-SAME-01",
+            Rule::S71500_SAME_01 => "S71500-SAME-01",
             Rule::CNT_EDGE_01 => "CNT-EDGE-01",
             Rule::CNT_PRIO_01 => "CNT-PRIO-01",
             Rule::CNT_SAT_01 => "CNT-SAT-01",
@@ -386,6 +402,10 @@ impl Rule {
             Rule::IEC_BANK_01 => "The TON bank (structure of arrays, bit sets for IN, Q and running) gives every timer exactly the outputs of a reference TON called once per scan.",
             Rule::IEC_EQUIV_02 => "From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC_TIMER; every state on the way is valid (ET <= PT).",
             Rule::IEC_SHARE_01 => "Several instructions may share one IEC_TIMER structure: it holds one state, and each call acts by its own instruction's rule on the members the previous call left (stored IN, START, ET, Q), whichever instruction made it: a TON called with IN = 1 after a TP that stored IN = 1 sees no rising edge; a TONR takes a Q of 1 left by a TOF as its own expiry; a read through the structure updates by the rule of the instruction that executed last.",
+            Rule::LTIMER_STRUCT_01 => "On the S7-1500 the instance of TP, TON, TOF or TONR is of the data type IEC_TIMER or the instruction's TP_TIME ... TONR_TIME (PT and ET TIME), or IEC_LTIMER or TP_LTIME, TON_LTIME, TOF_LTIME, TONR_LTIME (PT and ET LTIME); each LTIME instance type is one structure, the IEC_LTIMER. The optimized IEC_LTIMER is 32 bytes, #[repr(C)], aligned to 8: START, PT and ET as 64-bit nanosecond words, then one flag byte (stored IN, Q, running, last instruction) and padding that stays 0; it behaves exactly as the reference for every operation, through the abstraction function, and a saved one is restored only from bytes an operation produces.",
+            Rule::LTIMER_CLOCK_01 => "The LTIME timers run on the CPU clock read as an unsigned 64-bit count of nanoseconds: START takes its value on the starting edge, and each update computes elapsed = now - START modulo 2^64, so a timer started before the clock wraps expires correctly after it, and any gap between two updates below 2^64 ns (about 584.5 years; gaps of 2^63 ns and more included) gives the exact elapsed time; a gap of 2^64 ns or more is indistinguishable from one 2^64 ns shorter. The clock has the resolution of LTIME, one nanosecond: a preset of n ns expires in the first update at which now - START >= n, with no rounding to a coarser tick.",
+            Rule::LTIMER_SAME_01 => "TP, TON, TOF and TONR on LTIME follow the rules of TIME unchanged, read with nanoseconds for milliseconds, the LTIME range for TIME's and LTIMER-CLOCK-01 for IEC-WRAP-01: IEC-START-01, IEC-EDGE-01, IEC-PT-LATCH-01, IEC-EXPIRY-01, IEC-ET-RANGE-01 (a negative PT is taken as 0), IEC-PT0-01, IEC-ACCESS-01, TP-IN-01, TP-RETRIGGER-01, TON-IN-01, TOF-IN-01, TONR-IN-01, TONR-RESUME-01, TONR-R-01, IEC-RT-01, IEC-PT-COIL-01, IEC-RETAIN-01, IEC-SHARE-01 (instructions sharing one IEC_LTIMER) and IEC-EQUIV-02 (with the IEC_LTIMER for the IEC_TIMER). In particular a TIME trace whose gaps between updates are below 2^32 ms, run on LTIME with every time and preset scaled by 10^6, gives the same Q and the scaled ET in every call.",
+            Rule::S71500_SAME_01 => "On TIME, TP, TON, TOF and TONR of the S7-1500 follow the same rules as on the S7-1200 (every IEC-, TP-, TON-, TOF- and TONR- rule); the help's S7-1500 parts differ only in the instance and parameter types LTIME adds (LTIMER-STRUCT-01) and in the operands' memory areas. Where its S7-1500 text words the update differently (Q and ET are updated at a call when they are interconnected, or at an access to Q or ET, and not when neither), the outputs are the same: a box call is one whose Q and ET are read, and an update that a call skips is the one the next read performs, so reads through the structure are invisible: inserting or removing reads of Q or ET between the box calls and the RT coil and RUN-STOP-RUN of a sequence changes the output of no box call, for a structure that one instruction runs on (IEC-SHARE-01: a read updates as the instruction that last ran, so on a shared structure it can decide) and every gap below the clock's period. Across a -(PT)- coil the two texts differ: an update skipped before the coil would compare with the new preset; the crate updates at every box call, as the S7-1200 text says (a box call is one whose outputs are read).",
             Rule::CNT_EDGE_01 => "CU and CD count on a change from 0 to 1; their edge memories take the input on every call, also while R or LD holds, so releasing R with CU held does not count.",
             Rule::CNT_PRIO_01 => "R and LD are levels with priority R > LD > counting: R = 1 gives CV = 0; else LD = 1 gives CV = PV.",
             Rule::CNT_SAT_01 => "CV saturates at the type's limits and only there: counting up goes on past PV and counting down goes on below 0 (signed types), up to MAX and down to MIN, where a count leaves CV unchanged; it never wraps and never panics.",
