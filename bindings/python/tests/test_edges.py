@@ -239,7 +239,7 @@ def test_a_preset_cell_of_another_type_says_what_is_allowed() -> None:
         ("TON", {}, "the keyword argument pt"),
         ("TON", {"tv": "S5T#1S"}, "its preset PT is the keyword argument pt"),
         ("TON", {"pt": "T#1.5S"}, "keyword argument pt: `T#1.5S`"),
-        ("TON", {"pt": 1, "type": "DINT"}, "the keyword argument type applies"),
+        ("TON", {"pt": 1, "type": "DINT"}, "keyword argument type: TON does not take the data type DINT"),
     ],
 )
 def test_errors_name_keyword_arguments_not_command_line_flags(
