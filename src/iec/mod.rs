@@ -395,6 +395,23 @@ fn rt(signals: crate::block::Signals) -> bool {
     signals.get(crate::catalog::Port::Rt)
 }
 
+/// [`crate::block::BlockOps::step`] of both IEC timer forms: the `-(RT)-` coil when its signal
+/// is set, then the box call.
+#[inline]
+fn step<C: ClockWord, D: IecDuration>(
+    timer: &mut impl IecTimerOps<C, D>,
+    kind: IecKind,
+    now: CpuTime<D::Unit>,
+    signals: crate::block::Signals,
+    pt: D,
+) -> IecOutput<C> {
+    if rt(signals) {
+        timer.reset_timer();
+    }
+    let input = <IecTimers<C, D> as crate::block::Family>::input(signals, pt);
+    timer.call(kind, now, input)
+}
+
 impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerRef<C, D> {
     crate::block::block_ops!(@types IecTimers<C, D>);
     const EXPLAINS: bool = true;
@@ -422,15 +439,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerRef<C, D> 
         signals: crate::block::Signals,
         pt: D,
     ) -> IecOutput<C> {
-        if rt(signals) {
-            self.reset_timer();
-        }
-        IecTimerOps::call(
-            self,
-            kind,
-            now,
-            <IecTimers<C, D> as crate::block::Family>::input(signals, pt),
-        )
+        step(self, kind, now, signals, pt)
     }
 
     /// A row with `RT` = 1 is the coil and the call explained as one
@@ -479,15 +488,7 @@ impl<C: ClockWord, D: IecDuration> crate::block::BlockOps for IecTimerOf<C, D> {
         signals: crate::block::Signals,
         pt: D,
     ) -> IecOutput<C> {
-        if rt(signals) {
-            self.reset_timer();
-        }
-        IecTimerOps::call(
-            self,
-            kind,
-            now,
-            <IecTimers<C, D> as crate::block::Family>::input(signals, pt),
-        )
+        step(self, kind, now, signals, pt)
     }
 
     fn step_explained(
