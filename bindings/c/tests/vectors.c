@@ -8,7 +8,8 @@
  *
  * Every row runs through every form of the block, each on its own state: the reference and the
  * optimized form, and for the S5 timers and counters also a box call on a memory area; the IEC
- * timers' rows also through the LTIME timers, scaled to nanoseconds (see replay_iec_timer). The
+ * timers' rows also through the LTIME timers, scaled to nanoseconds (see replay_iec_timer),
+ * and the LTIME vectors (`TON-LTIME`, ...: t_ns) through the LTIME timers as written. The
  * presets are parsed by the C API's parsers. Every output of every row is compared with the
  * file; every call must return PLC_TIMERS_OK. Exit status 0 when all agree, 1 on any
  * difference (each reported with file, line and column), 2 on a malformed file or directory.
@@ -310,6 +311,45 @@ static void replay_iec_timer(const char *path, int kind) {
     csv_close(&c);
 }
 
+/* The IEC timers' LTIME vectors (`TP-LTIME`, ...): t_ns, IN, R, RT, PT (an LTIME literal or
+ * integer ns), Q, ET (ns), through both IEC_LTIMER forms as written, with no scaling: the
+ * presets past TIME's range and the gaps past 2^63 ns that only LTIME has. */
+static unsigned long ltime_vector_rows;
+
+static void replay_iec_ltimer(const char *path, int kind) {
+    csv c;
+    csv_open(&c, path);
+    int t = required(&c, "t_ns"), in_col = required(&c, "IN"), r = column(&c, "R");
+    int rt = column(&c, "RT");
+    int pt = required(&c, "PT"), q = required(&c, "Q"), et = required(&c, "ET");
+    plc_timers_iec_ltimer_ref ref;
+    plc_timers_iec_ltimer opt;
+    check_status(&c, "LTIME ref init", plc_timers_iec_ltimer_ref_init(&ref));
+    check_status(&c, "LTIME init", plc_timers_iec_ltimer_init(&opt));
+    while (csv_next(&c)) {
+        plc_timers_iec_ltime_input in = {.in = cell_bool(&c, in_col), .r = cell_bool(&c, r)};
+        if (plc_timers_ltime_parse(c.field[pt], &in.pt_ns, NULL) != PLC_TIMERS_OK)
+            in.pt_ns = cell_i64(&c, pt);
+        uint64_t now = cell_u64(&c, t);
+        if (cell_bool(&c, rt)) {
+            check_status(&c, "LTIME reference RT", plc_timers_iec_ltimer_ref_reset(&ref));
+            check_status(&c, "LTIME optimized RT", plc_timers_iec_ltimer_reset(&opt));
+            rt_rows++;
+        }
+        plc_timers_iec_ltime_output out[2];
+        check_status(&c, "LTIME reference", plc_timers_iec_ltimer_ref_call(&ref, kind, now, in, &out[0]));
+        check_status(&c, "LTIME optimized", plc_timers_iec_ltimer_call(&opt, kind, now, in, &out[1]));
+        const char *form[2] = {"LTIME reference", "LTIME optimized"};
+        for (int i = 0; i < 2; i++) {
+            compare(&c, form[i], "Q", cell_bool(&c, q), out[i].q);
+            compare_u64(&c, form[i], "ET (ns)", cell_u64(&c, et), out[i].et_ns);
+        }
+        rows++;
+        ltime_vector_rows++;
+    }
+    csv_close(&c);
+}
+
 /* ------------------------------------------------------------------------------------------ */
 /* IEC counters, one replay function per integer type. CV and PV are read as 64-bit integers
  * of the type's signedness and must fit the type. */
@@ -418,6 +458,10 @@ static const struct {
     {"TON", replay_iec_timer, PLC_TIMERS_TON},
     {"TOF", replay_iec_timer, PLC_TIMERS_TOF},
     {"TONR", replay_iec_timer, PLC_TIMERS_TONR},
+    {"TP-LTIME", replay_iec_ltimer, PLC_TIMERS_TP},
+    {"TON-LTIME", replay_iec_ltimer, PLC_TIMERS_TON},
+    {"TOF-LTIME", replay_iec_ltimer, PLC_TIMERS_TOF},
+    {"TONR-LTIME", replay_iec_ltimer, PLC_TIMERS_TONR},
 #define COUNTER_BLOCKS(TYPE, NAME)                                                               \
     {"CTU-" TYPE, replay_counter_##NAME, PLC_TIMERS_CTU},                                        \
         {"CTD-" TYPE, replay_counter_##NAME, PLC_TIMERS_CTD},                                    \
@@ -480,14 +524,14 @@ int main(int argc, char **argv) {
     closedir(top);
     printf("%lu files, %lu rows (%lu with the RT coil), %lu outputs compared, %lu differences\n",
            files, rows, rt_rows, comparisons, failures);
-    printf("LTIME: %lu IEC timer rows replayed scaled to ns (%lu files cut at a step of 2^31 ms "
-           "or more), %lu PT literals parsed as LTIME\n",
-           ltime_rows, ltime_cuts, ltime_literals);
+    printf("LTIME: %lu rows of the LTIME vectors; %lu IEC timer rows replayed scaled to ns (%lu "
+           "files cut at a step of 2^31 ms or more), %lu PT literals parsed as LTIME\n",
+           ltime_vector_rows, ltime_rows, ltime_cuts, ltime_literals);
     /* The IEC timers' decisions.csv set the RT coil: a replay that never applied it did not
      * replay them. */
     if (rt_rows == 0) die(argv[1], 0, "no row with RT = 1: the RT column was not replayed");
     /* Likewise the LTIME replay must have run (a cut of every file would test nothing). */
-    if (ltime_rows == 0 || ltime_literals == 0)
+    if (ltime_rows == 0 || ltime_literals == 0 || ltime_vector_rows == 0)
         die(argv[1], 0, "no IEC timer row replayed on LTIME");
     return failures ? 1 : 0;
 }
