@@ -209,7 +209,11 @@ impl<const N: usize, D: IecDuration> TonBank<N, D> {
     /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `Ok(false)`, and no
     /// change, when the state is not valid ([`IecState::is_valid`]).
     #[must_use = "`Ok(false)` says the state was not valid and the timer did not change"]
-    pub fn set_state(&mut self, i: usize, state: IecState<D::Clock>) -> Result<bool, NoSuchOperand> {
+    pub fn set_state(
+        &mut self,
+        i: usize,
+        state: IecState<D::Clock>,
+    ) -> Result<bool, NoSuchOperand> {
         self.flags_of(i)?;
         if !state.is_valid() {
             return Ok(false);
