@@ -29,6 +29,7 @@ impl ClockWord for U4 {
     const BITS: u32 = 4;
     const ZERO: Self = U4(0);
     const MAX: Self = U4(15);
+    const TOP_BIT: Self = U4(8);
     fn elapsed_since(self, earlier: Self) -> Self {
         U4(self.0.wrapping_sub(earlier.0) & 15)
     }
@@ -623,16 +624,17 @@ proptest! {
     }
 }
 
-/// IEC-BANK-01: a TON bank of `N` timers scanned with the IN bits `inputs[k]` and presets `pts`
-/// at the times `start + steps[..=k]` equals one reference TON per timer, called once per scan.
-pub fn prop_ton_bank<const N: usize>(
+/// IEC-BANK-01: a TON bank of `N` timers of data type `D` scanned with the IN bits `inputs[k]`
+/// and presets `pts` at the times `start + steps[..=k]` (in `D`'s clock unit) equals one
+/// reference TON of `D` per timer, called once per scan.
+pub fn prop_ton_bank<D: IecDuration, const N: usize>(
     start: u64,
     steps: &[u64],
     inputs: &[[bool; N]],
-    pts: &[Time; N],
+    pts: &[D; N],
 ) {
-    let mut bank = TonBank::<N>::new();
-    let mut refs = [IecTimerRef::new(); N];
+    let mut bank = TonBank::<N, D>::new();
+    let mut refs = [IecTimerRef::<D::Clock, D>::default(); N];
     check_eq!(
         bank.output(N),
         Err(NoSuchOperand {
@@ -642,9 +644,9 @@ pub fn prop_ton_bank<const N: usize>(
         }),
         "IEC-BANK-01: timer {N} does not exist"
     );
-    let mut now = CpuTime::from_millis(start);
+    let mut now = CpuTime::<D::Unit>::from_ticks(start);
     for (dt, input) in steps.iter().zip(inputs) {
-        now = now.add_millis(*dt);
+        now = now.add_ticks(*dt);
         bank.scan(now, input, pts);
         let mut outs = [None; N];
         for (i, r) in refs.iter_mut().enumerate() {
@@ -669,7 +671,10 @@ pub fn prop_ton_bank<const N: usize>(
             n += 1;
         }
         check_eq!(n, N, "IEC-BANK-01: outputs() gives every timer at {now:?}");
-        for (fill_q, fill_et) in [(true, u32::MAX), (false, 0)] {
+        for (fill_q, fill_et) in [
+            (true, <D::Clock as ClockWord>::MAX),
+            (false, <D::Clock as ClockWord>::ZERO),
+        ] {
             let (mut q, mut et) = ([fill_q; N], [fill_et; N]);
             bank.outputs_into(&mut q, &mut et);
             for (i, want) in outs.iter().enumerate() {
@@ -731,14 +736,7 @@ proptest! {
         pts in prop::collection::vec(prop_oneof![-5i32..5, 0i32..300, any::<i32>()], 40),
     ) {
         let pts: [Time; 40] = core::array::from_fn(|i| Time::from_millis(pts[i]));
-        let mut input = 0u64;
-        let inputs: Vec<[bool; 40]> = flips
-            .iter()
-            .map(|f| {
-                input ^= f & f.rotate_left(17);
-                core::array::from_fn(|i| input >> i & 1 != 0)
-            })
-            .collect();
+        let inputs: Vec<[bool; 40]> = in_patterns(&flips);
         prop_ton_array(start, &steps, &inputs, &pts);
     }
 }
@@ -761,23 +759,49 @@ proptest! {
         for (i, p) in all.iter_mut().enumerate() {
             *p = Time::from_millis(if i % 2 == 0 { pts[i / 2] } else { pts2[i / 2] });
         }
-        let mut input = 0u64;
-        let inputs: Vec<[bool; 64]> = flips
-            .iter()
-            .map(|f| {
-                input ^= f & f.rotate_left(17);
-                core::array::from_fn(|i| input >> i & 1 != 0)
-            })
-            .collect();
+        let inputs: Vec<[bool; 64]> = in_patterns(&flips);
         prop_ton_bank(start, &steps, &inputs, &all);
     }
+
+    /// IEC-BANK-01 for `LTIME` (the S7-1500 long timers on the 64-bit nanosecond clock): a bank
+    /// of 64 with the IN patterns above, presets including negative, 0, small, past TIME's
+    /// range (`LT#30D` and beyond) and any LTIME, scan intervals of a few ns to past 2^32 ns
+    /// and any 64-bit step, starts anywhere on the clock (the CPU time saturates at its top).
+    #[test]
+    fn proptest_ltimer_ton_bank_equals_reference(
+        start in prop_oneof![any::<u64>(), (u64::MAX - 500)..=u64::MAX, 0u64..1_000],
+        steps in prop::collection::vec(prop_oneof![0u64..5, 0u64..200, (1u64 << 32)..(1u64 << 33), any::<u64>()], 16),
+        flips in prop::collection::vec(any::<u64>(), 16),
+        pts in prop::array::uniform32(prop_oneof![-5i64..5, 0i64..300, (1i64 << 31)..(1i64 << 52), any::<i64>()]),
+        pts2 in prop::array::uniform32(0i64..300),
+    ) {
+        let all: [LTime; 64] = core::array::from_fn(|i| {
+            LTime::from_nanos(if i % 2 == 0 { pts[i / 2] } else { pts2[i / 2] })
+        });
+        let inputs: Vec<[bool; 64]> = in_patterns(&flips);
+        prop_ton_bank(start, &steps, &inputs, &all);
+    }
+}
+
+/// The IN bits of `N` timers scan by scan, one scan per word of `flips`: each scan flips the
+/// bits `f & f.rotate_left(17)` of the previous one, so that edges cluster and many timers
+/// keep their IN for several scans.
+fn in_patterns<const N: usize>(flips: &[u64]) -> Vec<[bool; N]> {
+    let mut input = 0u64;
+    flips
+        .iter()
+        .map(|f| {
+            input ^= f & f.rotate_left(17);
+            core::array::from_fn(|i| input >> i & 1 != 0)
+        })
+        .collect()
 }
 
 // ---------------------------------------------------------------------------------------------
 // One property per requirement: the rule's text as a predicate over one operation (state
 // before, operation, state after, outputs), with the update in closed form and the clock's
 // modular arithmetic computed independently in u64; checked on the reference, the 16-byte
-// structure and, for TON calls on the 32-bit clock, the TON bank.
+// structure and, for TON calls on the data type's own clock, the TON bank.
 // ---------------------------------------------------------------------------------------------
 
 use crate::cover::{cover, covers};
@@ -789,7 +813,7 @@ pub enum IecImpl {
     Reference,
     /// `IecTimerOf` (the 16-byte structure).
     Structure,
-    /// `TonBank` (TON calls on the 32-bit clock only).
+    /// `TonBank` (TON calls on the data type's own clock only: 32 bits for TIME, 64 for LTIME).
     Bank,
     /// `IecTimerOf::ton_for_arrays` (TON calls only), the array form of the structure's call.
     TonForArrays,
@@ -837,7 +861,8 @@ pub fn iec_run<C: ClockWord, D: IecDuration>(
     }
 }
 
-/// A TON call on a one-timer bank holding `state` (`TIME` on the 32-bit clock only).
+/// A TON call on a one-timer bank of `D` holding `state`: on `D`'s own clock only (the 32-bit
+/// one for `TIME`, the 64-bit one for `LTIME`), as the bank has no narrow clocks.
 fn bank_run<C: ClockWord, D: IecDuration>(
     state: IecState<C>,
     op: Op<D>,
@@ -845,19 +870,18 @@ fn bank_run<C: ClockWord, D: IecDuration>(
     let Op::Call(IecKind::Ton, now, input) = op else {
         return None;
     };
-    // The bank is of TIME timers, whose clock word is the 32-bit one (LTIME's is 64 bits).
-    let time = <D::Clock as ClockWord>::BITS == 32;
     // The bank holds TON states as a scan leaves them: running only with IN = 1 and Q = 0.
-    if !time || C::BITS != 32 || !matches!(state.kind, Some(IecKind::Ton)) || !iec_reachable(&state)
+    if C::BITS != <D::Clock as ClockWord>::BITS
+        || !matches!(state.kind, Some(IecKind::Ton))
+        || !iec_reachable(&state)
     {
         return None;
     }
-    let now = CpuTime::from_millis(now.ticks());
-    let pt = Time::from_millis(i32::try_from(input.pt.units_signed()).expect("a TIME"));
-    let w = |c: C| u32::try_from(c.to_u64()).expect("32 bits");
-    let c = |v: u32| C::from_u64_wrapping(u64::from(v));
-    let mut bank = TonBank::<1>::new();
-    let s32 = IecState {
+    // Same width: the values carry over unchanged.
+    let w = |c: C| <D::Clock as ClockWord>::from_u64_wrapping(c.to_u64());
+    let c = |v: D::Clock| C::from_u64_wrapping(v.to_u64());
+    let mut bank = TonBank::<1, D>::new();
+    let in_bank = IecState {
         kind: state.kind,
         input: state.input,
         running: state.running,
@@ -867,11 +891,11 @@ fn bank_run<C: ClockWord, D: IecDuration>(
         q: state.q,
     };
     check_eq!(
-        bank.set_state(0, s32),
+        bank.set_state(0, in_bank),
         Ok(true),
         "IEC-BANK-01: the bank takes every valid TON state"
     );
-    bank.scan(now, &[input.input], &[pt]);
+    bank.scan(now, &[input.input], &[input.pt]);
     let after = bank.get(0).expect("timer 0");
     let out = bank.output(0).expect("timer 0");
     check_eq!(
@@ -1885,28 +1909,46 @@ fn kani_ton_array() {
     );
 }
 
-/// IEC-BANK-01: a bank of 2 TONs over 3 scans against 2 reference TONs. Symbolic: the start
-/// time (`u32` ms), the 3 time steps (`u32` ms each), the IN bits of each timer in each scan,
-/// the 2 presets (any TIME). `#[kani::unwind(17)]`: the scan takes the 2 timers through the group
-/// code on a padded copy of 16 (loops of 16 iterations and the exit, the rising edges at most
-/// 16); the check's loops over 2 timers (the readers' too: `outputs`, and `outputs_into` from
-/// 2 fills) and the 3 scans are shorter.
+/// IEC-BANK-01, the body of the bank's harnesses for both data types: a bank of 2 TONs of `D`
+/// over 3 scans against 2 reference TONs; the start time and the 3 time steps are clock words
+/// of `D` (in its unit), so that the scans reach across the clock's wrap.
+fn ton_bank_harness<D: IecDuration>()
+where
+    (D::Clock, [D::Clock; 3], [[bool; 2]; 3], [D; 2]): bolero::TypeGenerator,
+{
+    bolero::check!()
+        .with_type::<(D::Clock, [D::Clock; 3], [[bool; 2]; 3], [D; 2])>()
+        .with_iterations(20_000)
+        .for_each(|(start, steps, inputs, pts)| {
+            let steps = steps.map(ClockWord::to_u64);
+            prop_ton_bank::<D, 2>(start.to_u64(), &steps, inputs, pts);
+        });
+}
+
+/// IEC-BANK-01 on the 32-bit clock (`TIME`): a bank of 2 TONs over 3 scans against 2 reference
+/// TONs. Symbolic: the start time (`u32` ms), the 3 time steps (`u32` ms each), the IN bits of
+/// each timer in each scan, the 2 presets (any TIME). `#[kani::unwind(17)]`: the scan takes the 2
+/// timers through the group code on a padded copy of 16 (loops of 16 iterations and the exit,
+/// the rising edges at most 16); the check's loops over 2 timers (the readers' too: `outputs`,
+/// and `outputs_into` from 2 fills) and the 3 scans are shorter.
 #[test]
 #[cfg_attr(kani, kani::proof, kani::unwind(17))]
 fn kani_ton_bank() {
     crate::cover::harness(
         concat!(module_path!(), "::", stringify!(kani_ton_bank)),
-        || {
-            crate::cover::check_ids(&["IEC-BANK-01"], || {
-                bolero::check!()
-                    .with_type::<(u32, [u32; 3], [[bool; 2]; 3], [Time; 2])>()
-                    .with_iterations(20_000)
-                    .for_each(|(start, steps, inputs, pts)| {
-                        let steps = steps.map(u64::from);
-                        prop_ton_bank::<2>(u64::from(*start), &steps, inputs, pts);
-                    });
-            });
-        },
+        || crate::cover::check_ids(&["IEC-BANK-01"], ton_bank_harness::<Time>),
+    );
+}
+
+/// IEC-BANK-01 on the 64-bit nanosecond clock (`LTIME`): as [`kani_ton_bank`], the start time
+/// and the 3 time steps `u64` ns each, the 2 presets any LTIME. `#[kani::unwind(17)]`: as
+/// there.
+#[test]
+#[cfg_attr(kani, kani::proof, kani::unwind(17))]
+fn kani_ltimer_ton_bank() {
+    crate::cover::harness(
+        concat!(module_path!(), "::", stringify!(kani_ltimer_ton_bank)),
+        || crate::cover::check_ids(&["IEC-BANK-01"], ton_bank_harness::<LTime>),
     );
 }
 

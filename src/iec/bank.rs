@@ -1,11 +1,13 @@
 //! A bank of TON timers in structure-of-arrays form, for a soft-PLC that scans thousands of
 //! on-delays: one array per structure member, so that a scan is one pass over each array.
 //! Each timer behaves exactly as [`super::IecTimerRef`] called as `TON` once per scan
-//! (IEC-BANK-01, checked in `proofs/iec.rs`).
+//! (IEC-BANK-01, checked in `proofs/iec.rs`), for `TIME` and for `LTIME` (one body, generic over
+//! the data type as the timers are).
 
 use super::{IecKind, IecOutput, IecState};
 use crate::operand::{NoSuchOperand, Operand};
-use crate::time::{CpuTime, Time};
+use crate::time::clock::ClockWord;
+use crate::time::{CpuTime, IecDuration, Time};
 
 /// Flag bits of [`TonBank::flags`].
 const IN: u8 = 0b0001;
@@ -15,16 +17,13 @@ const RUNNING: u8 = 0b0100;
 /// [`TonBank`]'s representation); cleared by the next scan.
 const EXPLICIT: u8 = 0b1000;
 
-/// The top bit of a 32-bit word: `x ^ BIAS` maps the unsigned order of `x` onto the signed order
-/// (`a < b` unsigned exactly when `(a ^ BIAS) < (b ^ BIAS)` signed), and `x ^ BIAS` equals
-/// `x + BIAS` modulo 2^32 (the carry out of the top bit is dropped).
-const BIAS: u32 = 0x8000_0000;
-
 /// Timers per step of the scan's kernel: 16 flag bytes fill one 128-bit vector, their 16 words
 /// four.
 const LANES: usize = 16;
 
-/// `N` TON timers, called together once per scan.
+/// `N` TON timers of data type `D`, called together once per scan: `TIME` (the default; a
+/// 32-bit millisecond clock, `u32` members) or `LTIME` (the S7-1500 long timers; a 64-bit
+/// nanosecond clock, `u64` members).
 ///
 /// ```
 /// use plc_timers::iec::TonBank;
@@ -42,9 +41,24 @@ const LANES: usize = 16;
 /// assert_eq!(delays.output(0).map(|o| o.et), Ok(2_000));
 /// ```
 ///
+/// The same bank of `LTIME` timers, on the nanosecond clock:
+///
+/// ```
+/// use plc_timers::iec::TonBank;
+/// use plc_timers::time::{CpuTime, LTime};
+///
+/// let mut delays = TonBank::<3, LTime>::new();
+/// let pt = [plc_timers::ltime!("LT#2S"); 3];
+/// for scan in 0..=4u64 {
+///     delays.scan(CpuTime::from_nanos(500_000_000 * scan), &[true, false, true], &pt);
+/// }
+/// assert_eq!(delays.output(0).map(|o| (o.q, o.et)), Ok((true, 2_000_000_000)));
+/// ```
+///
 /// # Representation
 ///
-/// Per timer: START, PT (stored as `PT ^ 2^31`, the form the scan compares in), an ET slot and
+/// Per timer: START, PT (stored with its top bit flipped, [`ClockWord::flip_top`], the form
+/// the scan compares in), an ET slot and
 /// a flag byte (IN, Q, RUNNING). The ET slot of a stopped timer holds its ET. A running timer's
 /// ET is not stored: it is `now - START` for the clock `now` of the last scan (the bank keeps
 /// it), which is exactly what that scan's update computed (ET = elapsed while elapsed < PT); its
@@ -53,22 +67,22 @@ const LANES: usize = 16;
 /// `now - START`, keeps its ET in the slot and a flag saying so until the next scan. The scan
 /// then needs, per timer, one subtraction, one compare and a few masks.
 #[derive(Clone, Debug)]
-pub struct TonBank<const N: usize> {
-    start: [u32; N],
-    /// PT ^ [`BIAS`].
-    pt: [u32; N],
+pub struct TonBank<const N: usize, D: IecDuration = Time> {
+    start: [D::Clock; N],
+    /// PT with its top bit flipped ([`ClockWord::flip_top`]).
+    pt: [D::Clock; N],
     /// ET of a stopped timer; PT of a running one (unless [`EXPLICIT`]).
-    et: [u32; N],
+    et: [D::Clock; N],
     flags: [u8; N],
     /// The clock of the last scan.
-    now: u32,
+    now: D::Clock,
     /// Whether a scan has run: before it, no instruction has run on the structures.
     scanned: bool,
     /// Whether some timer has the [`EXPLICIT`] flag.
     explicit: bool,
 }
 
-impl<const N: usize> Default for TonBank<N> {
+impl<const N: usize, D: IecDuration> Default for TonBank<N, D> {
     fn default() -> Self {
         TonBank::new()
     }
@@ -76,15 +90,34 @@ impl<const N: usize> Default for TonBank<N> {
 
 /// Two banks are equal when their timers are: the same states ([`TonBank::get`]), whatever
 /// their representation.
-impl<const N: usize> PartialEq for TonBank<N> {
+impl<const N: usize, D: IecDuration> PartialEq for TonBank<N, D> {
     fn eq(&self, other: &Self) -> bool {
         self.scanned == other.scanned && (0..N).all(|i| self.get(i) == other.get(i))
     }
 }
 
-impl<const N: usize> Eq for TonBank<N> {}
+impl<const N: usize, D: IecDuration> Eq for TonBank<N, D> {}
 
-impl<const N: usize> TonBank<N> {
+/// `c` where `mask` is all ones, 0 where it is 0 (the masks of the scan are 64-bit, all ones or
+/// 0, whatever the clock word's width; on the 32-bit word the compiler keeps it 32 bits wide).
+#[inline(always)]
+fn masked<C: ClockWord>(c: C, mask: u64) -> C {
+    C::from_u64_wrapping(c.to_u64() & mask)
+}
+
+/// `a` where `mask` is all ones, `b` where it is 0.
+#[inline(always)]
+fn select<C: ClockWord>(mask: u64, a: C, b: C) -> C {
+    C::from_u64_wrapping(a.to_u64() & mask | b.to_u64() & !mask)
+}
+
+/// All ones when `on`, else 0.
+#[inline(always)]
+fn mask(on: bool) -> u64 {
+    u64::from(on).wrapping_neg()
+}
+
+impl<const N: usize, D: IecDuration> TonBank<N, D> {
     /// The number of timers.
     pub const LEN: usize = N;
 
@@ -95,25 +128,26 @@ impl<const N: usize> TonBank<N> {
     /// let bank = TonBank::<10>::new();
     /// assert_eq!(bank.outputs().filter(|o| o.q).count(), 0);
     /// ```
-    pub const fn new() -> TonBank<N> {
+    pub const fn new() -> TonBank<N, D> {
         TonBank {
-            start: [0; N],
-            pt: [BIAS; N],
-            et: [0; N],
+            start: [<D::Clock as ClockWord>::ZERO; N],
+            // PT = 0, top bit flipped.
+            pt: [<D::Clock as ClockWord>::TOP_BIT; N],
+            et: [<D::Clock as ClockWord>::ZERO; N],
             flags: [0; N],
-            now: 0,
+            now: <D::Clock as ClockWord>::ZERO,
             scanned: false,
             explicit: false,
         }
     }
 
     /// ET of timer `i` (`i < N`): derived for a running timer (see the representation).
-    fn et_of(&self, i: usize) -> u32 {
+    fn et_of(&self, i: usize) -> D::Clock {
         // A select by mask, not a branch: read in bulk ([`TonBank::outputs`]), RUNNING varies
         // from timer to timer and a branch would mispredict on it; the mask form also lets the
         // loop over the timers vectorize.
-        let derived = u32::from(self.flags[i] & (RUNNING | EXPLICIT) == RUNNING).wrapping_neg();
-        (self.now.wrapping_sub(self.start[i]) & derived) | (self.et[i] & !derived)
+        let derived = mask(self.flags[i] & (RUNNING | EXPLICIT) == RUNNING);
+        select(derived, self.now.elapsed_since(self.start[i]), self.et[i])
     }
 
     /// Timer `i`'s flags, or the error naming the bank's range.
@@ -122,7 +156,7 @@ impl<const N: usize> TonBank<N> {
     }
 
     /// The outputs `Q` and `ET` of timer `i`.
-    pub fn output(&self, i: usize) -> Result<IecOutput<u32>, NoSuchOperand> {
+    pub fn output(&self, i: usize) -> Result<IecOutput<D::Clock>, NoSuchOperand> {
         Ok(IecOutput {
             q: self.flags_of(i)? & Q != 0,
             et: self.et_of(i),
@@ -130,7 +164,7 @@ impl<const N: usize> TonBank<N> {
     }
 
     /// The outputs of every timer, timer 0 first.
-    pub fn outputs(&self) -> impl ExactSizeIterator<Item = IecOutput<u32>> + '_ {
+    pub fn outputs(&self) -> impl ExactSizeIterator<Item = IecOutput<D::Clock>> + '_ {
         (0..N).map(|i| IecOutput {
             q: self.flags[i] & Q != 0,
             et: self.et_of(i),
@@ -151,7 +185,7 @@ impl<const N: usize> TonBank<N> {
     /// bank.outputs_into(&mut q, &mut et);
     /// assert_eq!((q, et), ([false, false], [40, 0]));
     /// ```
-    pub fn outputs_into(&self, q: &mut [bool; N], et: &mut [u32; N]) {
+    pub fn outputs_into(&self, q: &mut [bool; N], et: &mut [D::Clock; N]) {
         for i in 0..N {
             q[i] = self.flags[i] & Q != 0;
             et[i] = self.et_of(i);
@@ -159,14 +193,14 @@ impl<const N: usize> TonBank<N> {
     }
 
     /// The state of timer `i` as the reference names it.
-    pub fn get(&self, i: usize) -> Result<IecState<u32>, NoSuchOperand> {
+    pub fn get(&self, i: usize) -> Result<IecState<D::Clock>, NoSuchOperand> {
         let f = self.flags_of(i)?;
         Ok(IecState {
             kind: self.scanned.then_some(IecKind::Ton),
             input: f & IN != 0,
             running: f & RUNNING != 0,
             start: self.start[i],
-            pt: self.pt[i] ^ BIAS,
+            pt: self.pt[i].flip_top(),
             et: self.et_of(i),
             q: f & Q != 0,
         })
@@ -175,13 +209,17 @@ impl<const N: usize> TonBank<N> {
     /// Puts timer `i` in `state` (a TON state: its `kind` is ignored). `Ok(false)`, and no
     /// change, when the state is not valid ([`IecState::is_valid`]).
     #[must_use = "`Ok(false)` says the state was not valid and the timer did not change"]
-    pub fn set_state(&mut self, i: usize, state: IecState<u32>) -> Result<bool, NoSuchOperand> {
+    pub fn set_state(
+        &mut self,
+        i: usize,
+        state: IecState<D::Clock>,
+    ) -> Result<bool, NoSuchOperand> {
         self.flags_of(i)?;
         if !state.is_valid() {
             return Ok(false);
         }
         self.start[i] = state.start;
-        self.pt[i] = state.pt ^ BIAS;
+        self.pt[i] = state.pt.flip_top();
         self.et[i] = state.et;
         self.flags[i] = (u8::from(state.input) * IN)
             | (u8::from(state.q) * Q)
@@ -197,7 +235,7 @@ impl<const N: usize> TonBank<N> {
     fn settle_explicit(&mut self) {
         for ((f, et), &pt) in self.flags.iter_mut().zip(self.et.iter_mut()).zip(&self.pt) {
             if *f & EXPLICIT != 0 {
-                *et = pt ^ BIAS;
+                *et = pt.flip_top();
                 *f &= !(EXPLICIT | Q);
             }
         }
@@ -218,9 +256,9 @@ impl<const N: usize> TonBank<N> {
     ///
     /// - IN = 0 (`reset_and_stop`): START = ET = 0, flags 0 (stopped, Q = 0, IN memory 0); PT
     ///   kept. The pass masks START, the ET slot and the flags with IN.
-    /// - IN = 1, memory 1, running (the update): `elapsed = now - START` modulo 2^32; the
-    ///   pass compares `elapsed < PT` as `(now ^ 2^31) - START < PT ^ 2^31` signed (both
-    ///   sides are the unsigned values plus 2^31, see `BIAS`). Not reached: START kept, still
+    /// - IN = 1, memory 1, running (the update): `elapsed = now - START` modulo 2^BITS; the
+    ///   pass compares `elapsed < PT` as `flip_top(now) - START < flip_top(PT)` signed (both
+    ///   sides are the unsigned values plus 2^(BITS-1), see [`ClockWord::flip_top`]). Not reached: START kept, still
     ///   running, Q = 0, and ET = elapsed = the new clock - START (derived). Reached: START =
     ///   0, stopped, Q = 1, and ET = PT, which the slot holds already.
     /// - IN = 1, memory 1, stopped: nothing changes (its START is 0, [`IecState::is_valid`],
@@ -238,8 +276,8 @@ impl<const N: usize> TonBank<N> {
     /// to 2 (expired) by subtracting 2, a stopped timer's stay; the running timers' Q is 0
     /// (kept so by every step and by `settle_explicit`), so bits 1-2 are 4, 2 or 0 and the
     /// subtraction never borrows.
-    pub fn scan(&mut self, now: CpuTime, input: &[bool; N], pt: &[Time; N]) {
-        let now = now.clock::<u32>();
+    pub fn scan(&mut self, now: CpuTime<D::Unit>, input: &[bool; N], pt: &[D; N]) {
+        let now = now.clock::<D::Clock>();
         if self.explicit {
             self.settle_explicit();
         }
@@ -255,14 +293,14 @@ impl<const N: usize> TonBank<N> {
 }
 
 /// [`TonBank::scan`]'s pass over the timers, as a loop for [`crate::simd::run`].
-struct Scan<'a, const N: usize> {
-    bank: &'a mut TonBank<N>,
+struct Scan<'a, const N: usize, D: IecDuration> {
+    bank: &'a mut TonBank<N, D>,
     input: &'a [bool; N],
-    pt: &'a [Time; N],
-    now: u32,
+    pt: &'a [D; N],
+    now: D::Clock,
 }
 
-impl<const N: usize> crate::simd::Kernel for Scan<'_, N> {
+impl<const N: usize, D: IecDuration> crate::simd::Kernel for Scan<'_, N, D> {
     #[inline(always)]
     fn run(self) {
         let Scan {
@@ -290,12 +328,12 @@ impl<const N: usize> crate::simd::Kernel for Scan<'_, N> {
         // timers are new ones with IN = 0, which stay as they are).
         let n = start_tail.len();
         if n > 0 {
-            let mut start = [0; LANES];
-            let mut latched = [BIAS; LANES];
-            let mut slots = [0; LANES];
+            let mut start = [<D::Clock as ClockWord>::ZERO; LANES];
+            let mut latched = [<D::Clock as ClockWord>::TOP_BIT; LANES];
+            let mut slots = [<D::Clock as ClockWord>::ZERO; LANES];
             let mut flags = [0; LANES];
             let mut inputs = [false; LANES];
-            let mut presets = [Time::ZERO; LANES];
+            let mut presets = [D::ZERO; LANES];
             start[..n].copy_from_slice(start_tail);
             latched[..n].copy_from_slice(latched_tail);
             slots[..n].copy_from_slice(slots_tail);
@@ -322,32 +360,33 @@ impl<const N: usize> crate::simd::Kernel for Scan<'_, N> {
 /// The pass of [`TonBank::scan`] over 16 timers: every case as masks and selects, the start of
 /// a timer included (see the proof there), with the same straight-line code for every timer.
 #[inline(always)]
-fn pass(
-    now: u32,
-    start: &mut [u32; LANES],
-    latched: &mut [u32; LANES],
-    slots: &mut [u32; LANES],
+fn pass<C: ClockWord, D: IecDuration>(
+    now: C,
+    start: &mut [C; LANES],
+    latched: &mut [C; LANES],
+    slots: &mut [C; LANES],
     flags: &mut [u8; LANES],
     inputs: &[bool; LANES],
-    presets: &[Time; LANES],
+    presets: &[D; LANES],
 ) {
-    let now_biased = now ^ BIAS;
+    let now_biased = now.flip_top();
     let on: [u8; LANES] = core::array::from_fn(|j| u8::from(inputs[j]));
     // A rise: IN = 1 and its memory 0 (bytes 0/1).
     let rise: [u8; LANES] = core::array::from_fn(|j| on[j] & !flags[j] & IN);
     let mut not_reached = [0u8; LANES];
     for j in 0..LANES {
         // All ones when IN = 1, and when IN rose.
-        let on = u32::from(on[j]).wrapping_neg();
-        let rise = u32::from(rise[j]).wrapping_neg();
-        // A rising timer is taken as a running one with START = now and the new PT.
-        let pt = presets[j].clamp_negative();
-        let begun = now & rise | start[j] & !rise;
-        latched[j] = (pt ^ BIAS) & rise | latched[j] & !rise;
-        let elapsed_biased = now_biased.wrapping_sub(begun);
-        let nr = u32::from((latched[j] as i32) > (elapsed_biased as i32)).wrapping_neg();
-        start[j] = begun & nr & on;
-        slots[j] = pt & rise | slots[j] & on & !rise;
+        let on = mask(on[j] != 0);
+        let rise = mask(rise[j] != 0);
+        // A rising timer is taken as a running one with START = now and the new PT (negative
+        // as 0).
+        let pt = C::from_preset(presets[j].units());
+        let begun = select(rise, now, start[j]);
+        latched[j] = select(rise, pt.flip_top(), latched[j]);
+        let elapsed_biased = now_biased.elapsed_since(begun);
+        let nr = mask(elapsed_biased.lt_signed(latched[j]));
+        start[j] = masked(begun, nr & on);
+        slots[j] = select(rise, pt, masked(slots[j], on));
         not_reached[j] = nr as u8;
     }
     for j in 0..LANES {

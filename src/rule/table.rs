@@ -120,7 +120,7 @@ pub enum Rule {
     IEC_RETAIN_01,
     /// IEC-STRUCT-01 (`spec/requirements/iec.toml`): The optimized IEC\_TIMER is 16 bytes, #\[repr(C)\], and behaves exactly as the reference for every operation, through the abstraction function.
     IEC_STRUCT_01,
-    /// IEC-BANK-01 (`spec/requirements/iec.toml`): The TON bank (structure of arrays, bit sets for IN, Q and running) gives every timer exactly the outputs of a reference TON called once per scan.
+    /// IEC-BANK-01 (`spec/requirements/iec.toml`): The TON bank (structure of arrays, bit sets for IN, Q and running), of TIME or of LTIME timers, gives every timer exactly the outputs of a reference TON of the same data type called once per scan.
     IEC_BANK_01,
     /// IEC-EQUIV-02 (`spec/requirements/iec.toml`): From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC\_TIMER; every state on the way is valid (ET \<= PT).
     IEC_EQUIV_02,
@@ -399,7 +399,7 @@ impl Rule {
             Rule::IEC_PT_COIL_01 => "The PT coil loads the structure's preset; a running timer uses it from its next update; ET is clamped to it.",
             Rule::IEC_RETAIN_01 => "On RUN-STOP-RUN a non-retentive structure returns to its initial values; a retentive one keeps its data (its START keeps counting on the free-running clock).",
             Rule::IEC_STRUCT_01 => "The optimized IEC_TIMER is 16 bytes, #[repr(C)], and behaves exactly as the reference for every operation, through the abstraction function.",
-            Rule::IEC_BANK_01 => "The TON bank (structure of arrays, bit sets for IN, Q and running) gives every timer exactly the outputs of a reference TON called once per scan.",
+            Rule::IEC_BANK_01 => "The TON bank (structure of arrays, bit sets for IN, Q and running), of TIME or of LTIME timers, gives every timer exactly the outputs of a reference TON of the same data type called once per scan.",
             Rule::IEC_EQUIV_02 => "From the initial structure, every sequence of box calls, update-on-access reads, RT and PT coils and RUN-STOP-RUN gives the same outputs and, through the abstraction function, the same states in the reference and the 16-byte IEC_TIMER; every state on the way is valid (ET <= PT).",
             Rule::IEC_SHARE_01 => "Several instructions may share one IEC_TIMER structure: it holds one state, and each call acts by its own instruction's rule on the members the previous call left (stored IN, START, ET, Q), whichever instruction made it: a TON called with IN = 1 after a TP that stored IN = 1 sees no rising edge; a TONR takes a Q of 1 left by a TOF as its own expiry; a read through the structure updates by the rule of the instruction that executed last.",
             Rule::LTIMER_STRUCT_01 => "On the S7-1500 the instance of TP, TON, TOF or TONR is of the data type IEC_TIMER or the instruction's TP_TIME ... TONR_TIME (PT and ET TIME), or IEC_LTIMER or TP_LTIME, TON_LTIME, TOF_LTIME, TONR_LTIME (PT and ET LTIME); each LTIME instance type is one structure, the IEC_LTIMER. The optimized IEC_LTIMER is 32 bytes, #[repr(C)], aligned to 8: START, PT and ET as 64-bit nanosecond words, then one flag byte (stored IN, Q, running, last instruction) and padding that stays 0; it behaves exactly as the reference for every operation, through the abstraction function, and a saved one is restored only from bytes an operation produces.",

@@ -137,6 +137,8 @@ pub trait ClockWord: Copy + Eq + Ord + Debug + Default + Send + Sync + 'static {
     const ZERO: Self;
     /// The largest value before the wrap.
     const MAX: Self;
+    /// The top bit alone, `2^(BITS-1)`: the bias of [`ClockWord::flip_top`].
+    const TOP_BIT: Self;
 
     /// `self - earlier` modulo `2^BITS`: the time elapsed since `earlier`, correct across one
     /// wrap of the clock.
@@ -151,14 +153,30 @@ pub trait ClockWord: Copy + Eq + Ord + Debug + Default + Send + Sync + 'static {
     /// clocks of the proofs; on the 32-bit clock every non-negative `TIME` fits, on the 64-bit
     /// clock every non-negative `LTIME`).
     fn from_preset(units: u64) -> Self;
+
+    /// `self` with its top bit flipped, which is `self + 2^(BITS-1)` modulo `2^BITS` (the
+    /// carry out of the top bit is dropped) and maps the unsigned order onto the signed one:
+    /// `a < b` exactly when `a.flip_top().lt_signed(b.flip_top())`. The TON bank keeps its
+    /// presets in this form, so that its scan compares as the vector units do, signed.
+    #[inline(always)]
+    fn flip_top(self) -> Self {
+        Self::from_u64_wrapping(self.to_u64() ^ Self::TOP_BIT.to_u64())
+    }
+
+    /// `self < other`, both read as `BITS`-bit two's complement numbers.
+    #[inline(always)]
+    fn lt_signed(self, other: Self) -> bool {
+        self.flip_top() < other.flip_top()
+    }
 }
 
 macro_rules! clock_word {
-    ($t:ty) => {
+    ($t:ty, $signed:ty) => {
         impl ClockWord for $t {
             const BITS: u32 = <$t>::BITS;
             const ZERO: Self = 0;
             const MAX: Self = <$t>::MAX;
+            const TOP_BIT: Self = 1 << (<$t>::BITS - 1);
 
             #[inline]
             fn elapsed_since(self, earlier: Self) -> Self {
@@ -181,11 +199,20 @@ macro_rules! clock_word {
             fn from_preset(units: u64) -> Self {
                 <$t>::try_from(units).unwrap_or(<$t>::MAX)
             }
+            #[inline(always)]
+            fn flip_top(self) -> Self {
+                self ^ Self::TOP_BIT
+            }
+            #[inline(always)]
+            fn lt_signed(self, other: Self) -> bool {
+                // The reinterpretation is the point: the same bits, read signed.
+                (self as $signed) < (other as $signed)
+            }
         }
     };
 }
 
-clock_word!(u8);
-clock_word!(u16);
-clock_word!(u32);
-clock_word!(u64);
+clock_word!(u8, i8);
+clock_word!(u16, i16);
+clock_word!(u32, i32);
+clock_word!(u64, i64);

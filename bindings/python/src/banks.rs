@@ -11,12 +11,13 @@ use plc_timers::block::Instruction;
 use plc_timers::catalog::{Block, DataType};
 use plc_timers::counter::{BankInputs, CounterBank, CounterInt, CounterState};
 use plc_timers::iec::{IecState, TonBank};
-use plc_timers::time::{CpuTime, Time};
+use plc_timers::time::clock::ClockWord;
+use plc_timers::time::{CpuTime, IecDuration, LTime, Time, TimeUnit};
 use pyo3::exceptions::{PyImportError, PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple, PyType};
+use pyo3::types::{PyTuple, PyType};
 
-use crate::args::{self, forward, shown, type_name};
+use crate::args::{self, forward_in, shown, type_name};
 
 /// Lanes per core bank: a multiple of the TON kernel's 16 lanes, small enough that a chunk's
 /// inputs and state stay in the first-level cache while it is scanned.
@@ -210,9 +211,6 @@ fn writable<'py, T: Element>(
 /// The arrays of `out=`, each `None` when `out` is not given.
 type OutPair<'py> = (Option<Bound<'py, PyAny>>, Option<Bound<'py, PyAny>>);
 
-/// The outputs of a TON bank's scan: Q and ET.
-type TonArrays<'py> = (Bound<'py, PyArray1<bool>>, Bound<'py, PyArray1<i32>>);
-
 /// The two arrays of `out=`, if given.
 fn out_pair<'py>(out: Option<&Bound<'py, PyAny>>) -> PyResult<OutPair<'py>> {
     match out {
@@ -233,42 +231,115 @@ fn out_pair<'py>(out: Option<&Bound<'py, PyAny>>) -> PyResult<OutPair<'py>> {
     }
 }
 
-/// The state of a TON bank: its chunks and the scratch arrays of one chunk.
-#[derive(Clone)]
-struct TonLanes {
-    banks: Vec<Box<TonBank<CHUNK>>>,
-    last: Option<CpuTime>,
-    /// The PT of one chunk as `Time`s, reused for every chunk.
-    pt: Box<[Time; CHUNK]>,
-    /// The IN of one chunk as bools (the lanes past `n` in the last chunk stay 0).
-    input: Box<[bool; CHUNK]>,
-    /// One chunk's Q and ET (ms, before the cast to int32).
-    q: Box<[bool; CHUNK]>,
-    et: Box<[u32; CHUNK]>,
+/// A data type of the TON bank's timers with the numpy arrays of its PT (in) and ET (out): the
+/// one place where `TIME` and `LTIME` banks differ.
+trait BankData: IecDuration {
+    /// PT's numpy element: int32 ms for TIME, int64 ns for LTIME (the data type's own range).
+    type Pt: Element + Copy;
+    /// ET's numpy element: int32 ms for TIME (ET <= PT < 2**31), uint64 ns for LTIME.
+    type Et: Element + Copy;
+    /// The numpy dtype names of PT and ET.
+    const PT_DTYPE: &'static str;
+    const ET_DTYPE: &'static str;
+    /// PT as the data type.
+    fn preset(v: Self::Pt) -> Self;
+    /// ET as numpy takes it.
+    fn et(c: Self::Clock) -> Self::Et;
 }
 
-impl TonLanes {
-    fn new(n: usize) -> TonLanes {
+impl BankData for Time {
+    type Pt = i32;
+    type Et = i32;
+    const PT_DTYPE: &'static str = "int32";
+    const ET_DTYPE: &'static str = "int32";
+    fn preset(ms: i32) -> Time {
+        Time::from_millis(ms)
+    }
+    fn et(ms: u32) -> i32 {
+        // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
+        ms as i32
+    }
+}
+
+impl BankData for LTime {
+    type Pt = i64;
+    type Et = u64;
+    const PT_DTYPE: &'static str = "int64";
+    const ET_DTYPE: &'static str = "uint64";
+    fn preset(ns: i64) -> LTime {
+        LTime::from_nanos(ns)
+    }
+    fn et(ns: u64) -> u64 {
+        ns
+    }
+}
+
+/// A timer's state as pickle keeps it: IN, running, START, PT, ET, Q (the clock words widened
+/// to 64 bits).
+type TonRow = (bool, bool, u64, u64, u64, bool);
+
+/// A TON bank of any data type, behind one object-safe interface.
+trait AnyTonBank: Send + Sync {
+    /// One scan at `now` (whole units of the bank's clock) with IN as bytes (non-zero = 1)
+    /// and PT, into new arrays or those of `out`; returns Q and ET.
+    fn scan<'py>(
+        &self,
+        py: Python<'py>,
+        now: &Bound<'py, PyAny>,
+        in_: &Bound<'py, PyAny>,
+        pt: &Bound<'py, PyAny>,
+        out: OutPair<'py>,
+    ) -> PyResult<Bound<'py, PyTuple>>;
+    /// Q and ET of timer `i` (`i` < the bank's lanes) after the last scan.
+    fn output(&self, i: usize) -> Option<(bool, u64)>;
+    /// A copy with the same timers and clock.
+    fn copy(&self) -> Box<dyn AnyTonBank>;
+    /// The time of the last scan and every timer's state.
+    fn states(&self) -> (Option<u64>, Vec<TonRow>);
+    /// The timers put in `rows` (one per lane) and the time of the last scan; `Err` says
+    /// which timer's state no timer can be in.
+    fn set_states(&self, last: Option<u64>, rows: &[TonRow]) -> Result<(), String>;
+}
+
+/// The state of a TON bank: its chunks and the scratch arrays of one chunk.
+#[derive(Clone)]
+struct TonLanes<D: IecDuration> {
+    banks: Vec<Box<TonBank<CHUNK, D>>>,
+    /// The clock of the last scan, in the bank's unit.
+    last: Option<u64>,
+    /// The PT of one chunk, reused for every chunk.
+    pt: Box<[D; CHUNK]>,
+    /// The IN of one chunk as bools (the lanes past `n` in the last chunk stay 0).
+    input: Box<[bool; CHUNK]>,
+    /// One chunk's Q and ET (before the cast to numpy's element).
+    q: Box<[bool; CHUNK]>,
+    et: Box<[D::Clock; CHUNK]>,
+}
+
+impl<D: BankData> TonLanes<D> {
+    fn new(n: usize) -> TonLanes<D> {
         TonLanes {
             banks: (0..n.div_ceil(CHUNK)).map(|_| Box::default()).collect(),
             last: None,
-            pt: Box::new([Time::from_millis(0); CHUNK]),
+            pt: Box::new([D::ZERO; CHUNK]),
             input: Box::new([false; CHUNK]),
             q: Box::new([false; CHUNK]),
-            et: Box::new([0; CHUNK]),
+            et: Box::new([<D::Clock as ClockWord>::ZERO; CHUNK]),
         }
     }
 
-    /// One scan: `input` as bytes (non-zero = IN), `pt` in ms; Q (0/1) and ET into `q`, `et`.
-    fn scan(&mut self, now: CpuTime, input: &[u8], preset: &[i32], q: &mut [u8], et: &mut [i32]) {
+    /// One scan: `input` as bytes (non-zero = IN), `preset` in the clock's unit; Q (0/1) and
+    /// ET into `q`, `et`.
+    fn scan(&mut self, now: u64, input: &[u8], preset: &[D::Pt], q: &mut [u8], et: &mut [D::Et]) {
+        let now = CpuTime::from_ticks(now);
         let chunks = self
             .banks
             .iter_mut()
             .zip(q.chunks_mut(CHUNK).zip(et.chunks_mut(CHUNK)))
             .zip(input.chunks(CHUNK).zip(preset.chunks(CHUNK)));
         for ((bank, (q, et)), (input, preset)) in chunks {
-            for (t, &ms) in self.pt.iter_mut().zip(preset) {
-                *t = Time::from_millis(ms);
+            for (t, &v) in self.pt.iter_mut().zip(preset) {
+                *t = D::preset(v);
             }
             for (b, &byte) in self.input.iter_mut().zip(input) {
                 *b = byte != 0;
@@ -281,73 +352,40 @@ impl TonLanes {
                 *slot = u8::from(v);
             }
             for (slot, &v) in et.iter_mut().zip(self.et.iter()) {
-                // ET <= PT <= 2**31-1 (IecState::is_valid): the cast keeps the value.
-                *slot = v as i32;
+                *slot = D::et(v);
             }
         }
     }
 
     /// The state of lane `i` (`i` < the bank's lanes).
-    fn get(&self, i: usize) -> Option<IecState<u32>> {
+    fn get(&self, i: usize) -> Option<IecState<D::Clock>> {
         self.banks.get(i / CHUNK)?.get(i % CHUNK).ok()
     }
 }
 
-/// `n` TON timers called together once per scan, each exactly as `TON` called once per scan
-/// (IEC-BANK-01).
-///
-/// >>> import numpy as np
-/// >>> from plc_timers import TonBank
-/// >>> bank = TonBank(3)
-/// >>> pt = np.array([2000, 2000, 500], dtype=np.int32)
-/// >>> sensors = np.array([True, False, True])
-/// >>> for k in range(5):
-/// ...     q, et = bank.scan(500 * k, sensors, pt)
-/// >>> q.tolist(), et.tolist()
-/// ([True, False, True], [2000, 0, 500])
-#[pyclass(module = "plc_timers", name = "TonBank", frozen)]
-pub struct PyTonBank {
+/// The TON bank of `n` lanes of data type `D`.
+struct TonLanesOf<D: IecDuration> {
     n: usize,
-    lanes: Mutex<TonLanes>,
+    /// Locked as [`lock`] says.
+    lanes: Mutex<TonLanes<D>>,
 }
 
-#[pymethods]
-impl PyTonBank {
-    /// A bank of `n` new timers.
-    #[new]
-    fn new(py: Python<'_>, n: &Bound<'_, PyAny>) -> PyResult<Self> {
-        numpy_or_import_error(py)?;
-        let n = lanes(n)?;
-        Ok(PyTonBank {
-            n,
-            lanes: Mutex::new(TonLanes::new(n)),
-        })
-    }
-
-    fn __len__(&self) -> usize {
-        self.n
-    }
-
-    /// One scan at CPU time `now_ms`: timer `i` called as TON with IN = `in_[i]` and PT =
-    /// `pt[i]` (ms). `in_` is a numpy array of bool (its bytes read as numpy reads them:
-    /// non-zero is True; a uint8 array is taken too), `pt` of int32, both of length `n`.
-    /// Returns `(q, et)`: arrays of bool and int32 (ms), new ones or those of `out=(q, et)`.
-    #[pyo3(signature = (now_ms, in_, pt, *, out = None))]
+impl<D: BankData> AnyTonBank for TonLanesOf<D> {
     fn scan<'py>(
         &self,
         py: Python<'py>,
-        now_ms: &Bound<'py, PyAny>,
+        now: &Bound<'py, PyAny>,
         in_: &Bound<'py, PyAny>,
         pt: &Bound<'py, PyAny>,
-        out: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<TonArrays<'py>> {
-        let now = args::now_ms(now_ms)?;
+        (q_out, et_out): OutPair<'py>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let unit = <D::Unit as TimeUnit>::SYMBOL;
+        let now = args::clock(now, unit)?;
         let n = self.n;
         let input = bool_bytes(in_, "in_", n)?;
-        let preset = array::<i32>(pt, "pt", "int32", n)?;
-        let (q_out, et_out) = out_pair(out)?;
+        let preset = array::<D::Pt>(pt, "pt", D::PT_DTYPE, n)?;
         let (q, q_bytes) = bool_output(py, q_out.as_ref(), "q", n)?;
-        let et = output::<i32>(py, et_out.as_ref(), "et", "int32", n)?;
+        let et = output::<D::Et>(py, et_out.as_ref(), "et", D::ET_DTYPE, n)?;
         // `array` checked that both are contiguous.
         let (input, preset) = match (input.as_slice(), preset.as_slice()) {
             (Ok(i), Ok(p)) => (i, p),
@@ -367,21 +405,164 @@ impl PyTonBank {
         };
         // No Python call from here to the end of the scan: see `lock`.
         let mut lanes = lock(&self.lanes);
-        forward(now, lanes.last)?;
+        forward_in(now, lanes.last, unit)?;
         lanes.last = Some(now);
         lanes.scan(now, input, preset, q_all, et_all);
-        Ok((q, et))
+        drop(lanes);
+        drop((q_rw, et_rw));
+        PyTuple::new(py, [q.into_any(), et.into_any()])
+    }
+
+    fn output(&self, i: usize) -> Option<(bool, u64)> {
+        lock(&self.lanes).get(i).map(|s| (s.q, s.et.to_u64()))
+    }
+
+    fn copy(&self) -> Box<dyn AnyTonBank> {
+        Box::new(TonLanesOf {
+            n: self.n,
+            lanes: Mutex::new(lock(&self.lanes).clone()),
+        })
+    }
+
+    fn states(&self) -> (Option<u64>, Vec<TonRow>) {
+        let lanes = lock(&self.lanes);
+        let rows = (0..self.n)
+            .filter_map(|i| lanes.get(i))
+            .map(|s| {
+                let (start, pt, et) = (s.start.to_u64(), s.pt.to_u64(), s.et.to_u64());
+                (s.input, s.running, start, pt, et, s.q)
+            })
+            .collect();
+        (lanes.last, rows)
+    }
+
+    fn set_states(&self, last: Option<u64>, rows: &[TonRow]) -> Result<(), String> {
+        let mut restored = TonLanes::<D>::new(self.n);
+        restored.last = last;
+        let max = <D::Clock as ClockWord>::MAX.to_u64();
+        for (i, &(input, running, start, pt, et, q)) in rows.iter().enumerate() {
+            let not_a_state = || format!("the state of timer {i} is not one a timer can be in");
+            if start > max || pt > max || et > max {
+                return Err(format!(
+                    "{}: START, PT and ET are 0..={max} for {}; got {start}, {pt}, {et}",
+                    not_a_state(),
+                    D::NAME
+                ));
+            }
+            let word = <D::Clock as ClockWord>::from_u64_wrapping;
+            let state = IecState {
+                kind: None,
+                input,
+                running,
+                start: word(start),
+                pt: word(pt),
+                et: word(et),
+                q,
+            };
+            let bank = &mut restored.banks[i / CHUNK];
+            if bank.set_state(i % CHUNK, state) != Ok(true) {
+                return Err(format!("{}: {state:?}", not_a_state()));
+            }
+        }
+        *lock(&self.lanes) = restored;
+        Ok(())
+    }
+}
+
+/// A bank of `n` new timers of data type `D`.
+fn ton_lanes<D: BankData>(n: usize) -> Box<dyn AnyTonBank> {
+    Box::new(TonLanesOf::<D> {
+        n,
+        lanes: Mutex::new(TonLanes::new(n)),
+    })
+}
+
+/// The arguments `__reduce__` gives pickle for a `TonBank`: the class, `(n, type)`, the time of
+/// the last scan and every timer's state.
+type TonBankReduce<'py> = (
+    Bound<'py, PyType>,
+    (usize, &'static str),
+    (Option<u64>, Vec<TonRow>),
+);
+
+/// `n` TON timers of data type `type` called together once per scan, each exactly as `TON`
+/// called once per scan (IEC-BANK-01). `type` is `"TIME"` (default: the clock, PT and ET in
+/// milliseconds; PT int32, ET int32) or `"LTIME"` (S7-1500: in nanoseconds; PT int64, ET
+/// uint64).
+///
+/// >>> import numpy as np
+/// >>> from plc_timers import TonBank
+/// >>> bank = TonBank(3)
+/// >>> pt = np.array([2000, 2000, 500], dtype=np.int32)
+/// >>> sensors = np.array([True, False, True])
+/// >>> for k in range(5):
+/// ...     q, et = bank.scan(500 * k, sensors, pt)
+/// >>> q.tolist(), et.tolist()
+/// ([True, False, True], [2000, 0, 500])
+/// >>> lbank = TonBank(2, type="LTIME")  # nanoseconds
+/// >>> lpt = np.array([1_500_000, 30 * 86_400 * 10**9], dtype=np.int64)  # LT#1MS500US, LT#30D
+/// >>> q, et = lbank.scan(0, np.array([True, True]), lpt)
+/// >>> q, et = lbank.scan(1_500_000, np.array([True, True]), lpt)
+/// >>> q.tolist(), et.tolist(), et.dtype.name
+/// ([True, False], [1500000, 1500000], 'uint64')
+#[pyclass(module = "plc_timers", name = "TonBank", frozen)]
+pub struct PyTonBank {
+    n: usize,
+    data_type: DataType,
+    bank: Box<dyn AnyTonBank>,
+}
+
+#[pymethods]
+impl PyTonBank {
+    /// A bank of `n` new timers of data type `type` (TIME or LTIME).
+    #[new]
+    #[pyo3(signature = (n, r#type = "TIME"))]
+    fn new(py: Python<'_>, n: &Bound<'_, PyAny>, r#type: &str) -> PyResult<Self> {
+        numpy_or_import_error(py)?;
+        let n = lanes(n)?;
+        let data_type = crate::blocks::instruction(Block::Ton, r#type)?.data_type();
+        let bank = match data_type {
+            DataType::LTime => ton_lanes::<LTime>(n),
+            // TIME, the one left of the types TON takes.
+            _ => ton_lanes::<Time>(n),
+        };
+        Ok(PyTonBank { n, data_type, bank })
+    }
+
+    fn __len__(&self) -> usize {
+        self.n
+    }
+
+    /// The data type's name (`TIME`, `LTIME`).
+    #[getter]
+    fn r#type(&self) -> &'static str {
+        self.data_type.name()
+    }
+
+    /// One scan at CPU time `now` (whole ms for TIME, whole ns for LTIME): timer `i` called
+    /// as TON with IN = `in_[i]` and PT = `pt[i]` (in the same unit). `in_` is a numpy array
+    /// of bool (its bytes read as numpy reads them: non-zero is True; a uint8 array is taken
+    /// too), `pt` of int32 (TIME) or int64 (LTIME), both of length `n`. Returns `(q, et)`:
+    /// arrays of bool and int32 (TIME) or uint64 (LTIME), new ones or those of `out=(q, et)`.
+    #[pyo3(signature = (now, /, in_, pt, *, out = None))]
+    fn scan<'py>(
+        &self,
+        py: Python<'py>,
+        now: &Bound<'py, PyAny>,
+        in_: &Bound<'py, PyAny>,
+        pt: &Bound<'py, PyAny>,
+        out: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let out = out_pair(out)?;
+        self.bank.scan(py, now, in_, pt, out)
     }
 
     /// The outputs of timer `i` (Q, ET) after the last scan.
     fn output(&self, i: &Bound<'_, PyAny>) -> PyResult<crate::blocks::PyIecOutput> {
         let i = lane(i, self.n, "timer")?;
-        let state = lock(&self.lanes).get(i);
-        state
-            .map(|s| crate::blocks::PyIecOutput {
-                q: s.q,
-                et: u64::from(s.et),
-            })
+        self.bank
+            .output(i)
+            .map(|(q, et)| crate::blocks::PyIecOutput { q, et })
             .ok_or_else(|| PyIndexError::new_err(format!("no timer {i}")))
     }
 
@@ -390,7 +571,8 @@ impl PyTonBank {
     fn __copy__(&self) -> Self {
         PyTonBank {
             n: self.n,
-            lanes: Mutex::new(lock(&self.lanes).clone()),
+            data_type: self.data_type,
+            bank: self.bank.copy(),
         }
     }
 
@@ -398,32 +580,22 @@ impl PyTonBank {
         self.__copy__()
     }
 
-    /// For pickle: `TonBank(n)`, then the state of every timer (IN, running, START, PT, ET,
-    /// Q) and the time of the last scan.
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyType>, (usize,), Bound<'py, PyTuple>)> {
-        let py = slf.py();
+    /// For pickle: `TonBank(n, type)`, then the time of the last scan and the state of every
+    /// timer (IN, running, START, PT, ET, Q).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<TonBankReduce<'py>> {
         let this = slf.get();
-        let (last, states) = {
-            let lanes = lock(&this.lanes);
-            let states: Vec<IecState<u32>> = (0..this.n).filter_map(|i| lanes.get(i)).collect();
-            (lanes.last.map(CpuTime::as_millis), states)
-        };
-        let rows = PyList::empty(py);
-        for s in states {
-            rows.append((s.input, s.running, s.start, s.pt, s.et, s.q))?;
-        }
-        let state = PyTuple::new(py, [last.into_pyobject(py)?.into_any(), rows.into_any()])?;
-        Ok((slf.get_type(), (this.n,), state))
+        Ok((
+            slf.get_type(),
+            (this.n, this.data_type.name()),
+            this.bank.states(),
+        ))
     }
 
     /// Restores what `__reduce__` saved; a state that no timer can be in is a `ValueError`.
     fn __setstate__(&self, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        type Row = (bool, bool, u32, u32, u32, bool);
-        let (last, rows): (Option<u64>, Vec<Row>) = state.extract().map_err(|_| {
+        let (last, rows): (Option<u64>, Vec<TonRow>) = state.extract().map_err(|_| {
             PyValueError::new_err(
-                "a TonBank's state is (last_ms, [(in, running, start, pt, et, q), …])",
+                "a TonBank's state is (last_now, [(in, running, start, pt, et, q), …])",
             )
         })?;
         if rows.len() != self.n {
@@ -433,31 +605,16 @@ impl PyTonBank {
                 self.n
             )));
         }
-        let mut restored = TonLanes::new(self.n);
-        restored.last = last.map(CpuTime::from_millis);
-        for (i, (input, running, start, pt, et, q)) in rows.into_iter().enumerate() {
-            let state = IecState {
-                kind: None,
-                input,
-                running,
-                start,
-                pt,
-                et,
-                q,
-            };
-            let bank = &mut restored.banks[i / CHUNK];
-            if bank.set_state(i % CHUNK, state) != Ok(true) {
-                return Err(PyValueError::new_err(format!(
-                    "the state of timer {i} is not one a timer can be in: {state:?}"
-                )));
-            }
-        }
-        *lock(&self.lanes) = restored;
-        Ok(())
+        self.bank
+            .set_states(last, &rows)
+            .map_err(PyValueError::new_err)
     }
 
     fn __repr__(&self) -> String {
-        format!("TonBank({})", self.n)
+        match self.data_type {
+            DataType::Time => format!("TonBank({})", self.n),
+            t => format!("TonBank({}, type={:?})", self.n, t.name()),
+        }
     }
 }
 

@@ -365,7 +365,7 @@ fn has_input(block: Block, port: Port, value: bool) -> PyResult<()> {
 
 /// The instruction `block` on the data type named `type_name` (ASCII case ignored), or a
 /// `ValueError` naming the data types the block takes.
-fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
+pub(crate) fn instruction(block: Block, type_name: &str) -> PyResult<Instruction> {
     let takes = || {
         let names: Vec<&str> = block.data_types().iter().map(|t| t.name()).collect();
         names.join(" ")

@@ -231,3 +231,115 @@ def test_the_clock_keyword_is_the_blocks_unit() -> None:
     assert t.call(now_ms=10, in_=True).et == 0 and lt.call(now_ns=10, in_=True).et == 0
     with pytest.raises(ValueError, match="now_ns goes backwards: 9 after 10"):
         lt.read_et(9)
+
+
+# --- the numpy bank on LTIME ---------------------------------------------------------------------
+
+
+def test_ltime_ton_bank_lanes_are_ltime_ton_blocks() -> None:
+    """IEC-BANK-01 on LTIME: every watched lane of an LTIME bank (full chunks and a padded one)
+    equals an LTIME `TON` block called one scan at a time, with presets past TIME's range
+    (up to LT#30D and beyond), negative ones and 0, and gaps of up to 2**40 ns."""
+    n = 1024 + 37
+    rng = np.random.default_rng(36)
+    bank = plc_timers.TonBank(n, type="LTIME")
+    assert (bank.type, len(bank), repr(bank)) == ("LTIME", n, f'TonBank({n}, type="LTIME")')
+    watched = [0, 1, 1023, 1024, n - 1]
+    blocks = {i: plc_timers.TON(type="LTIME") for i in watched}
+    pt = np.concatenate([
+        rng.integers(-5, 5, n // 4),
+        rng.integers(0, 3 * 10**9, n // 4),
+        rng.integers(2**31 * NS_PER_MS, 40 * DAY_NS, n // 4),
+        rng.integers(-(2**62), 2**62, n - 3 * (n // 4)),
+    ]).astype(np.int64)
+    rng.shuffle(pt)
+    pt[watched] = [0, 30 * DAY_NS, 1_500_000, -7, 2**63 - 1]
+    now = 2**64 - 2**47  # 120 gaps of up to 2**40 ns: the scans end near the clock's top
+    for k in range(120):
+        now += int(rng.choice([0, int(rng.integers(1, 10**9)), int(rng.integers(0, 2**40))]))
+        inputs = rng.random(n) < 0.85
+        q, et = bank.scan(now, inputs, pt)
+        assert q.dtype == np.bool_ and et.dtype == np.uint64 and len(et) == n
+        for i, b in blocks.items():
+            o = b.call(now, in_=bool(inputs[i]), pt=int(pt[i]))
+            assert (bool(q[i]), int(et[i])) == (o.q, o.et), (
+                f"IEC-BANK-01: LTIME lane {i}, scan {k} at {now} ns")
+            assert bank.output(i) == o, f"IEC-BANK-01: output({i}) at {now} ns"
+    q2, et2 = np.zeros(n, np.bool_), np.zeros(n, np.uint64)
+    res = bank.scan(now, inputs, pt, out=(q2, et2))
+    assert res[0] is q2 and res[1] is et2 and (q2 == q).all() and (et2 == et).all()
+
+
+@many
+@given(n=st.integers(1, 70), start=st.integers(0, 2**33), seed=st.integers(0, 2**32),
+       scans=st.integers(1, 40))
+def test_ltime_ton_bank_is_the_time_bank_in_nanoseconds(
+    n: int, start: int, seed: int, scans: int
+) -> None:
+    """IEC-BANK-01 and LTIMER-SAME-01: the LTIME bank scanned at every time and with every
+    preset of a TIME bank times 10**6 gives the TIME bank's Q and its ET times 10**6 (an
+    oracle independent of the LTIME code path). The steps stay below 2**31 ms, so that the
+    TIME clock's wrap at 2**32 ms, which `start` may cross, changes no elapsed time."""
+    rng = np.random.default_rng(seed)
+    ms_bank, ns_bank = plc_timers.TonBank(n), plc_timers.TonBank(n, type="LTIME")
+    pt = rng.choice([rng.integers(-5, 5, n), rng.integers(0, 500, n),
+                     rng.integers(-(2**31), 2**31, n)]).astype(np.int32)
+    pt_ns = pt.astype(np.int64) * NS_PER_MS
+    now = start
+    for _ in range(scans):
+        now += int(rng.choice([0, int(rng.integers(1, 300)), int(rng.integers(0, 2**31))]))
+        inputs = rng.random(n) < 0.8
+        q_ms, et_ms = ms_bank.scan(now, inputs, pt)
+        q_ns, et_ns = ns_bank.scan(now * NS_PER_MS, inputs, pt_ns)
+        assert q_ns.tolist() == q_ms.tolist(), f"LTIMER-SAME-01: bank Q at {now} ms"
+        assert et_ns.tolist() == [e * NS_PER_MS for e in et_ms.tolist()], (
+            f"LTIMER-SAME-01: bank ET at {now} ms")
+
+
+def test_ltime_ton_bank_copy_and_pickle() -> None:
+    bank = plc_timers.TonBank(3, type="LTIME")
+    pt = np.array([30 * DAY_NS, 5, 10**9], np.int64)
+    bank.scan(0, np.array([True, True, False]), pt)
+    bank.scan(7, np.array([True, True, True]), pt)
+    copies = (copy.copy(bank), copy.deepcopy(bank), pickle.loads(pickle.dumps(bank)))
+    # From the rules: timer 0 runs since 0 ns (PT 30 days), timer 1 expired at PT = 5 ns,
+    # timer 2 rose at 7 ns and has run out 10**9 ns later.
+    want = ([False, True, True], [2 * 10**9, 5, 10**9])
+    for c in (bank, *copies):
+        assert c.type == "LTIME"
+        q, et = c.scan(2 * 10**9, np.ones(3, np.bool_), pt)
+        assert (q.tolist(), et.tolist()) == want, (
+            "IEC-BANK-01: a copied LTIME bank goes on as the original")
+    # A TIME bank's pickle refuses an LTIME-sized clock word; an LTIME one takes it.
+    state = bank.__reduce__()[2]
+    big = (state[0], [(True, True, 2**40, 2**41, 0, False)] * 3)
+    with pytest.raises(ValueError, match=r"START, PT and ET are 0..=4294967295 for TIME"):
+        plc_timers.TonBank(3).__setstate__(big)
+    plc_timers.TonBank(3, type="LTIME").__setstate__(big)
+
+
+def test_ltime_ton_bank_refuses_bad_input() -> None:
+    bank = plc_timers.TonBank(4, type="LTIME")
+    ok_in, ok_pt = np.zeros(4, np.bool_), np.zeros(4, np.int64)
+    with pytest.raises(TypeError, match=r"pt is a 1-D contiguous numpy array of int64 with 4"):
+        bank.scan(0, ok_in, np.zeros(4, np.int32))
+    with pytest.raises(TypeError, match=r"pt is a 1-D contiguous numpy array of int32 with 4"):
+        plc_timers.TonBank(4).scan(0, ok_in, ok_pt)
+    with pytest.raises(TypeError, match=r"out's et is a 1-D numpy array of uint64"):
+        bank.scan(0, ok_in, ok_pt, out=(np.zeros(4, np.bool_), np.zeros(4, np.int64)))
+    with pytest.raises(ValueError, match=r"now_ns is the CPU time in whole nanoseconds, "
+                                         r"0..=18446744073709551615; got -1"):
+        bank.scan(-1, ok_in, ok_pt)
+    with pytest.raises(ValueError, match=r"now_ns is .*; got 18446744073709551616"):
+        bank.scan(2**64, ok_in, ok_pt)
+    with pytest.raises(TypeError, match=r"now_ns is .*; got 1.5 \(float\)"):
+        bank.scan(1.5, ok_in, ok_pt)  # type: ignore[arg-type]
+    bank.scan(10**12, ok_in, ok_pt)
+    with pytest.raises(ValueError, match=r"now_ns goes backwards: 5 after 1000000000000"):
+        bank.scan(5, ok_in, ok_pt)
+    with pytest.raises(ValueError, match=r"unknown data type `XTIME`; TON takes TIME LTIME"):
+        plc_timers.TonBank(4, type="XTIME")
+    with pytest.raises(ValueError, match=r"TON does not take the data type INT; it takes TIME"):
+        plc_timers.TonBank(4, type="INT")
+    with pytest.raises(ValueError, match="n is the number of lanes"):
+        plc_timers.TonBank(-3, type="LTIME")
