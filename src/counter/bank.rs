@@ -130,18 +130,31 @@ struct Scan<'a, 'b, T, const N: usize> {
 impl<T: CounterInt, const N: usize> crate::simd::Kernel for Scan<'_, '_, T, N> {
     #[inline(always)]
     fn run(self) {
+        self.groups::<GROUP>();
+    }
+
+    #[inline(always)]
+    fn run_wide(self) {
+        self.groups::<WIDE_GROUP>();
+    }
+}
+
+impl<T: CounterInt, const N: usize> Scan<'_, '_, T, N> {
+    /// The scan in groups of `G` counters, the last `N % G` one at a time, all through the
+    /// same lane code.
+    #[inline(always)]
+    fn groups<const G: usize>(self) {
         let Scan { bank, inputs, pv } = self;
-        let (cv, cv_tail) = bank.cv.as_chunks_mut::<GROUP>();
-        let (edges, edges_tail) = bank.edges.as_chunks_mut::<GROUP>();
-        let (cu, cu_tail) = inputs.cu.as_chunks::<GROUP>();
-        let (cd, cd_tail) = inputs.cd.as_chunks::<GROUP>();
-        let (r, r_tail) = inputs.r.as_chunks::<GROUP>();
-        let (ld, ld_tail) = inputs.ld.as_chunks::<GROUP>();
-        let pvs = [pv; GROUP];
+        let (cv, cv_tail) = bank.cv.as_chunks_mut::<G>();
+        let (edges, edges_tail) = bank.edges.as_chunks_mut::<G>();
+        let (cu, cu_tail) = inputs.cu.as_chunks::<G>();
+        let (cd, cd_tail) = inputs.cd.as_chunks::<G>();
+        let (r, r_tail) = inputs.r.as_chunks::<G>();
+        let (ld, ld_tail) = inputs.ld.as_chunks::<G>();
+        let pvs = [pv; G];
         for (g, (cv, edges)) in cv.iter_mut().zip(edges.iter_mut()).enumerate() {
             ctud_lanes(cv, edges, [&cu[g], &cd[g], &r[g], &ld[g]], HAS_ALL, &pvs);
         }
-        // The last `N % GROUP` counters one at a time, through the same code.
         for (j, (cv, edges)) in cv_tail.iter_mut().zip(edges_tail.iter_mut()).enumerate() {
             let (cv, edges) = (core::array::from_mut(cv), core::array::from_mut(edges));
             let ins =
@@ -150,6 +163,10 @@ impl<T: CounterInt, const N: usize> crate::simd::Kernel for Scan<'_, '_, T, N> {
         }
     }
 }
+
+/// Counters per group of the scan compiled for AVX2 and AVX-512 (`simd-dispatch`): one
+/// AVX-512 vector of their bytes.
+const WIDE_GROUP: usize = 64;
 
 /// Counters per pass of [`CounterBank::scan`]'s lane code: one SSE2 vector of their bytes.
 /// groups of 32 and 64 ran slower on SSE2 (`benches/peers`, one build each, against the same
