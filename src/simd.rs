@@ -19,6 +19,21 @@
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
+
+    /// The loop as compiled for AVX2 and AVX-512: [`run`](Self::run) unless the loop's
+    /// shape depends on the vector width (groups sized for SSE2's 16 registers of 16 bytes
+    /// hold back a loop that could fill 64-byte registers).
+    #[cfg_attr(
+        not(all(feature = "simd-dispatch", target_arch = "x86_64")),
+        allow(dead_code)
+    )]
+    #[inline(always)]
+    fn run_wide(self)
+    where
+        Self: Sized,
+    {
+        self.run();
+    }
 }
 
 /// Runs `kernel` compiled for the widest vector extension this CPU has (with the feature
@@ -60,12 +75,12 @@ mod x86 {
     /// `kernel` compiled with AVX2.
     #[target_feature(enable = "avx2")]
     pub(super) fn avx2<K: Kernel>(kernel: K) {
-        kernel.run();
+        kernel.run_wide();
     }
 
     /// `kernel` compiled with AVX-512 (foundation and byte/word instructions).
     #[target_feature(enable = "avx512f,avx512bw")]
     pub(super) fn avx512<K: Kernel>(kernel: K) {
-        kernel.run();
+        kernel.run_wide();
     }
 }

@@ -2,7 +2,7 @@
 //! counters sharing one preset. Each counter behaves exactly as [`super::CounterRef`] called as
 //! `CTUD` once per scan (CNT-EQUIV-01, checked in `proofs/counter.rs`).
 
-use super::packed::ctud_lane;
+use super::packed::{ctud_lanes, HAS_ALL};
 use super::{outputs, CounterInt, CounterOutput, CounterState};
 use crate::operand::{self, NoSuchOperand, Operand};
 
@@ -106,11 +106,11 @@ impl<T: CounterInt, const N: usize> CounterBank<T, N> {
 
     /// One scan: every counter called once as CTUD with preset `pv`.
     ///
-    /// One pass over the arrays with the same straight-line code for every counter, the lane
-    /// of [`super::Counter::call_for_arrays`] (the reference's CTUD, see there for why): the
-    /// edges give a 0/1 increment and decrement, applied by one saturating add and one
-    /// saturating subtract, and R and LD select, without a branch, so that LLVM vectorizes the
-    /// loop (8 INT counters per 128-bit instruction) and random edges cost no misprediction.
+    /// The counters in groups of 16 through the same straight-line code, the lane code of
+    /// [`super::Counter::call_for_arrays`] (the reference's CTUD, see there for why): the
+    /// edges give a step of -1, 0 or 1, applied by saturating arithmetic, and R and LD choose
+    /// by masks, without a branch, so that LLVM vectorizes each group (its bytes 16 counters
+    /// per 128-bit instruction, its INT counts 8) and random edges cost no misprediction.
     pub fn scan(&mut self, inputs: &BankInputs<'_, N>, pv: T) {
         crate::simd::run(Scan {
             bank: self,
@@ -130,16 +130,46 @@ struct Scan<'a, 'b, T, const N: usize> {
 impl<T: CounterInt, const N: usize> crate::simd::Kernel for Scan<'_, '_, T, N> {
     #[inline(always)]
     fn run(self) {
+        self.groups::<GROUP>();
+    }
+
+    #[inline(always)]
+    fn run_wide(self) {
+        self.groups::<WIDE_GROUP>();
+    }
+}
+
+impl<T: CounterInt, const N: usize> Scan<'_, '_, T, N> {
+    /// The scan in groups of `G` counters, the last `N % G` one at a time, all through the
+    /// same lane code.
+    #[inline(always)]
+    fn groups<const G: usize>(self) {
         let Scan { bank, inputs, pv } = self;
-        let lanes = bank.cv.iter_mut().zip(bank.edges.iter_mut()).zip(
-            inputs
-                .cu
-                .iter()
-                .zip(inputs.cd.iter())
-                .zip(inputs.r.iter().zip(inputs.ld.iter())),
-        );
-        for ((cv, edges), ((&cu, &cd), (&r, &ld))) in lanes {
-            (*cv, *edges) = ctud_lane(*cv, *edges, cu, cd, r, ld, pv);
+        let (cv, cv_tail) = bank.cv.as_chunks_mut::<G>();
+        let (edges, edges_tail) = bank.edges.as_chunks_mut::<G>();
+        let (cu, cu_tail) = inputs.cu.as_chunks::<G>();
+        let (cd, cd_tail) = inputs.cd.as_chunks::<G>();
+        let (r, r_tail) = inputs.r.as_chunks::<G>();
+        let (ld, ld_tail) = inputs.ld.as_chunks::<G>();
+        let pvs = [pv; G];
+        for (g, (cv, edges)) in cv.iter_mut().zip(edges.iter_mut()).enumerate() {
+            ctud_lanes(cv, edges, [&cu[g], &cd[g], &r[g], &ld[g]], HAS_ALL, &pvs);
+        }
+        for (j, (cv, edges)) in cv_tail.iter_mut().zip(edges_tail.iter_mut()).enumerate() {
+            let (cv, edges) = (core::array::from_mut(cv), core::array::from_mut(edges));
+            let ins =
+                [&cu_tail[j], &cd_tail[j], &r_tail[j], &ld_tail[j]].map(core::array::from_ref);
+            ctud_lanes(cv, edges, ins, HAS_ALL, &[pv]);
         }
     }
 }
+
+/// Counters per group of the scan compiled for AVX2 and AVX-512 (`simd-dispatch`): one
+/// AVX-512 vector of their bytes.
+const WIDE_GROUP: usize = 64;
+
+/// Counters per pass of [`CounterBank::scan`]'s lane code: one SSE2 vector of their bytes.
+/// groups of 32 and 64 ran slower on SSE2 (`benches/peers`, one build each, against the same
+/// 0.57 µs copy floor: 1.79-1.82 µs per scan of 10 048 INT counters with 32, 2.44-2.47 with
+/// 64, 1.67 with 16), holding more vectors than SSE2's 16 registers.
+const GROUP: usize = 16;

@@ -72,14 +72,13 @@ impl<T: CounterInt> Counter<T> {
     ///
     /// In a loop over many counters the inputs and states differ from one counter to the next,
     /// so the branches of `call` (R, LD, an edge) are mispredicted about as often as they
-    /// change; here the edges give a 0/1 increment and decrement, applied by one saturating add
-    /// and one saturating subtract, and R and LD select the new CV by conditional moves that
-    /// the compiler must keep ([`core::hint::select_unpredictable`]). `call` computes CTU and
-    /// CTD with scalar selects; for CTUD it branches, which is faster for a counter called
-    /// once per scan, whose branches go the same way scan after scan.
+    /// change; here the edges give a step of -1, 0 or 1, applied by saturating arithmetic, and
+    /// R and LD choose the new CV by bit masks. `call` computes CTU and CTD with scalar
+    /// selects; for CTUD it branches, which is faster for a counter called once per scan,
+    /// whose branches go the same way scan after scan.
     ///
-    /// Why it equals the reference: see [`CounterOps::call`] (the same rules), and the lane of
-    /// [`super::CounterBank::scan`], which is this function.
+    /// Why it equals the reference: see [`CounterOps::call`] (the same rules); its lane code
+    /// is that of [`Counter::call_array`] and [`super::CounterBank::scan`], on one counter.
     ///
     /// ```
     /// use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
@@ -98,10 +97,17 @@ impl<T: CounterInt> Counter<T> {
         input: CounterInput<T>,
     ) -> CounterOutput<T> {
         let (cu, cd, r, ld) = masked_inputs(kind, &input);
-        let (cv, edges) = ctud_lane(self.cv, self.edges, cu, cd, r, ld, input.pv);
-        self.cv = cv;
-        self.edges = edges;
-        outputs(cv, input.pv)
+        let (mut cv, mut edges) = ([self.cv], [self.edges]);
+        ctud_lanes(
+            &mut cv,
+            &mut edges,
+            [&[cu], &[cd], &[r], &[ld]],
+            HAS_ALL,
+            &[input.pv],
+        );
+        [self.cv] = cv;
+        [self.edges] = edges;
+        outputs(self.cv, input.pv)
     }
 }
 
@@ -273,7 +279,12 @@ fn call_array_lanes<T: CounterInt, const N: usize>(
 /// vectorize the stores (read through the kernel's structure, they were reloaded after every
 /// store). CV and the edge bytes are moved into arrays of their own (structure of arrays,
 /// which the lane loop vectorizes as the bank's does; the loop straight over the structures
-/// was not vectorized, and 3x slower), the lane run on each, and the results moved back.
+/// was not vectorized, and 3x slower), the lane code run on each counter, and the results moved
+/// back. One counter at a time here (`L` = 1 in a loop of 16, which LLVM vectorizes over the
+/// 16), not the two passes over the group that [`super::CounterBank::scan`] takes: on SSE2 the
+/// two passes made this loop slower (CTD 10.64 µs, 1.80x faster than the reference's loop,
+/// against 9.71 µs, 1.97x, one counter at a time; `benches/peers`, one build each), its time
+/// going into moving the counters' fields, which LLVM does one counter at a time either way.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn counter_group<T: CounterInt>(
@@ -288,15 +299,12 @@ fn counter_group<T: CounterInt>(
     let mut cv: [T; LANES] = core::array::from_fn(|j| counters[j].cv);
     let mut edges: [u8; LANES] = core::array::from_fn(|j| counters[j].edges);
     for j in 0..LANES {
-        (cv[j], edges[j]) = ctud_lane(
-            cv[j],
-            edges[j],
-            cu[j] & has.0,
-            cd[j] & has.1,
-            r[j] & has.2,
-            ld[j] & has.3,
-            pv[j],
+        let (cv, edges) = (
+            core::array::from_mut(&mut cv[j]),
+            core::array::from_mut(&mut edges[j]),
         );
+        let ins = [&cu[j], &cd[j], &r[j], &ld[j]].map(core::array::from_ref);
+        ctud_lanes(cv, edges, ins, has, core::array::from_ref(&pv[j]));
     }
     for j in 0..LANES {
         counters[j] = Counter {
@@ -320,39 +328,59 @@ fn masked_inputs<T>(kind: CounterKind, input: &CounterInput<T>) -> (bool, bool, 
     }
 }
 
-/// One CTUD call without a branch: CV and the edge byte (CU's memory in bit 0, CD's in bit 1)
-/// after a call with CU, CD, R, LD and PV. The lane of [`Counter::call_for_arrays`] and of
-/// [`super::CounterBank::scan`].
+/// Which inputs a kind has, as `(CU, CD, R, LD)`: the masks of [`ctud_lanes`].
+pub(crate) type Has = (bool, bool, bool, bool);
+
+/// The inputs of every kind (the bank's CTUD).
+pub(crate) const HAS_ALL: Has = (true, true, true, true);
+
+/// `L` CTUD calls without a branch: counter `j`'s CV and edge byte (CU's memory in bit 0, CD's
+/// in bit 1) after a call with the inputs at index `j` (those `has` lacks taken as 0) and PV
+/// `pv[j]`. The one lane code of [`Counter::call_for_arrays`] (`L` = 1), of
+/// [`Counter::call_array`] and of [`super::CounterBank::scan`] (`proofs/counter.rs` compares
+/// each with the reference).
 ///
 /// Why it equals the reference's CTUD: `up` and `down` are its edges (the input 1, its memory
 /// 0); both memories take the inputs on every call, also under R and LD (CNT-EDGE-01). Up alone
 /// counts up, down alone counts down, both or neither leave CV (CNT-SIMUL-01), with the
-/// reference's saturating steps (CNT-SAT-01); LD replaces the count and R replaces both
-/// (CNT-PRIO-01). The edges are computed with byte arithmetic, which stays in the byte lanes
-/// of the vectors when a loop over many counters is vectorized; the selects are
-/// `select_unpredictable`, which a vectorized loop turns into masks and a scalar loop keeps as
-/// conditional moves.
+/// reference's saturating steps (CNT-SAT-01; both in [`CounterInt::saturating_up_down`]).
+/// The count is kept only with neither R nor LD; PV is loaded with LD and not R, and with R
+/// the result is 0 (CNT-PRIO-01).
+///
+/// Two passes, so that a vectorized loop works at the full width of each type: the first over
+/// bytes only (the `bool` inputs, the edge bytes, the 0/1 edges and the choice of the new CV as
+/// two byte masks), 16 counters per SSE2 instruction; the second over `T` (the saturating step
+/// and the choice, [`CounterInt::select_by_masks`]), which widens each byte once. In one pass
+/// (each counter's lane whole) LLVM vectorized at `T`'s width and loaded the bytes 8 at a time:
+/// 42 instructions per 8 INT counters on SSE2, against 48 per 16 now (issue 41).
 #[inline(always)]
-pub(crate) fn ctud_lane<T: CounterInt>(
-    cv: T,
-    edges: u8,
-    cu: bool,
-    cd: bool,
-    r: bool,
-    ld: bool,
-    pv: T,
-) -> (T, u8) {
-    use core::hint::select_unpredictable as select;
-    // The inputs as 0/1 bytes, and every condition a test of a byte against 0: in vector
-    // lanes a test against 0 is one compare, where a `bool` taken as a condition costs a mask,
-    // a shift and a compare.
-    let (cu, cd, r, ld) = (u8::from(cu), u8::from(cd), u8::from(r), u8::from(ld));
-    let up = cu & !edges & CU_PREV;
-    let down = cd & !(edges >> 1) & 1;
-    let counted = cv.saturating_up_down(up & !down, down & !up);
-    let loaded = select(r != 0, T::ZERO, pv);
-    let cv = select(r | ld == 0, counted, loaded);
-    (cv, cu | cd << 1)
+pub(crate) fn ctud_lanes<T: CounterInt, const L: usize>(
+    cv: &mut [T; L],
+    edges: &mut [u8; L],
+    [cu, cd, r, ld]: [&[bool; L]; 4],
+    has: Has,
+    pv: &[T; L],
+) {
+    let mut up = [0u8; L];
+    let mut down = [0u8; L];
+    let mut count = [0u8; L];
+    let mut load = [0u8; L];
+    for j in 0..L {
+        // The inputs as 0/1 bytes, and the choices as byte masks (0 or 0xFF), which the
+        // second pass widens to `T` with one unpack and one shift per vector.
+        let cu = u8::from(cu[j] & has.0);
+        let cd = u8::from(cd[j] & has.1);
+        let (r, ld) = (u8::from(r[j] & has.2), u8::from(ld[j] & has.3));
+        let e = edges[j];
+        (up[j], down[j]) = (cu & !e & CU_PREV, cd & !(e >> 1) & 1);
+        edges[j] = cu | cd << 1;
+        count[j] = u8::from(r | ld == 0).wrapping_neg();
+        load[j] = (ld & !r).wrapping_neg();
+    }
+    for j in 0..L {
+        let counted = cv[j].saturating_up_down(up[j], down[j]);
+        cv[j] = T::select_by_masks(counted, count[j], pv[j], load[j]);
+    }
 }
 
 impl<T: CounterInt> CounterOps<T> for Counter<T> {
