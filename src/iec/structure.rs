@@ -764,7 +764,8 @@ impl<C: ClockWord, D: IecDuration> IecTimerOps<C, D> for IecTimerOf<C, D> {
                 // it (as `select_unpredictable(on, ET, 0)`, the select lost its hint when
                 // the compiler rewrote the conditional move, llvm/llvm-project#223469, and
                 // in a loop over timers it became a branch on IN again: `benches/peers`,
-                // loop of 10 048 TP, 24.4-24.6 → 21.5-21.8 µs on square waves).
+                // loop of 10 048 TP on square waves, 23.8-24.8 → 21.2-22.0 µs in the plain
+                // build, about even with `simd-dispatch`).
                 if flags & !f & flag::IN == 0 {
                     let q = f & flag::Q;
                     let et = masked(self.et, (flags & f & flag::IN).wrapping_neg());
