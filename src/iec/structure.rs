@@ -759,10 +759,16 @@ impl<C: ClockWord, D: IecDuration> IecTimerOps<C, D> for IecTimerOf<C, D> {
                 // stays one test); IN itself only selects ET: as a branch, a falling IN on a
                 // stopped timer cost a misprediction the rise test does not (random inputs,
                 // `benches/peers`: 1.55-1.69 → 1.23-1.25 ns in three builds; square waves
-                // 1.11-1.12 → 1.18 ns).
+                // 1.11-1.12 → 1.18 ns). ET is kept by a mask of IN: without a rise, IN is
+                // set only where the remembered IN is too, so IN and the remembered IN give
+                // it (as `select_unpredictable(on, ET, 0)`, the select lost its hint when
+                // the compiler rewrote the conditional move, llvm/llvm-project#223469, and
+                // in a loop over timers it became a branch on IN again: `benches/peers`,
+                // loop of 10 048 TP on square waves, 23.8-24.8 → 21.2-22.0 µs in the plain
+                // build, about even with `simd-dispatch`).
                 if flags & !f & flag::IN == 0 {
                     let q = f & flag::Q;
-                    let et = core::hint::select_unpredictable(on, self.et, C::ZERO);
+                    let et = masked(self.et, (flags & f & flag::IN).wrapping_neg());
                     self.et = et;
                     self.set_flags(flags | q);
                     return IecOutput { q: q != 0, et };
