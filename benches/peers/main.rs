@@ -20,7 +20,11 @@
 //! fit between two preemptions on a loaded machine. A one-step workload is timed in four
 //! copies of its loop at four placements in the code (`PLACEMENTS`: the same machine code ran
 //! 0.98-1.43 ns for one TONR step by its address alone), and its figure is their mean; the
-//! summary prints each one's fastest and slowest placement beside the table.
+//! summary prints each one's fastest and slowest placement beside the table. So is every loop
+//! that calls a block one instance at a time compiled into this binary (the per-instance
+//! loops and the per-instance forms of the bulk groups, `Workload::placed`), each placement
+//! with instances of its own; the forms that are one library call for the whole array or bank,
+//! and the copies, run their code where the library's build put it, one placement each.
 //!
 //! Input families (`common::Family`): every workload runs on steady square waves and on random
 //! inputs (IN flipping with probability 0.10 per step or scan; counters with random edges on
@@ -177,8 +181,9 @@ struct Workload<'a> {
     /// Time per iteration / `units` is the time per step (ns) or per scan (µs, with `scale`).
     units: f64,
     scale: f64,
-    /// The routine, once per placement of its code: one-step workloads have [`PLACEMENTS`]
-    /// copies of their timed loop (see [`step_loop`]), bulk workloads one.
+    /// The routine, once per placement of its code: one-step workloads and the per-instance
+    /// loops have [`PLACEMENTS`] copies of their timed loop (see [`step_loop`] and
+    /// [`Workload::placed`]), the other bulk workloads one.
     runs: Vec<Run<'a>>,
 }
 
@@ -196,6 +201,26 @@ impl<'a> Workload<'a> {
                 }
                 start.elapsed()
             })],
+        }
+    }
+
+    /// A workload whose iteration is `scan`, a loop that calls a block once per instance inline
+    /// in this binary (the per-instance loops), timed at the [`PLACEMENTS`] of a one-step
+    /// workload: placement `P` runs its own clone of `scan` (its own instances, which the
+    /// closure owns) in [`placed_scan`]`::<P>`. Callers mark the closure `#[inline(always)]`, so
+    /// that the loop is compiled into each placement's function, not called from it.
+    fn placed(name: &str, units: usize, scale: f64, scan: impl FnMut() + Clone + 'a) -> Self {
+        let runs: [Run<'a>; PLACEMENTS] = [
+            placed_run::<0>(scan.clone()),
+            placed_run::<1>(scan.clone()),
+            placed_run::<2>(scan.clone()),
+            placed_run::<3>(scan),
+        ];
+        Workload {
+            name: name.to_owned(),
+            units: units as f64,
+            scale,
+            runs: runs.into(),
         }
     }
 
@@ -220,7 +245,8 @@ impl<'a> Workload<'a> {
 /// over its placements.
 static RESULTS: Mutex<BTreeMap<String, f64>> = Mutex::new(BTreeMap::new());
 
-/// The fastest and slowest placement of each one-step workload (`group/name`), for the summary.
+/// The fastest and slowest placement of each workload timed at several (`group/name`), for
+/// the summary.
 static SPREADS: Mutex<BTreeMap<String, (f64, f64)>> = Mutex::new(BTreeMap::new());
 
 /// Rounds of the summary pass, and the time of one workload's turn in a round.
@@ -438,6 +464,12 @@ impl Stream {
 /// (x86-64: the loops are aligned to 16 bytes, so the four copies put the loop at each
 /// 16-byte offset of a 64-byte line, whatever the function's own address), and its figure
 /// is the mean of the four.
+///
+/// The per-instance loops over 10 048 instances (`Workload::placed`) inline `call` into a loop
+/// of this binary, so they move with every change too: the reference's TOF loop took 36.0 and
+/// 38.4 µs per scan in two builds that differed only in another block's code, and the TOF
+/// loop's ratio to the reference's went from 0.96x to 1.04x with unchanged code, as large as
+/// the few per cent its goal is about. They are timed at the same placements.
 const PLACEMENTS: usize = 4;
 
 /// One iteration of a one-step workload: every step of the stream, each instance called in
@@ -463,6 +495,25 @@ fn step_loop<const P: usize, T, O>(
             black_box(step(&mut instance.0, bits, now));
         }
     }
+}
+
+/// The routine of placement `P` of a [`Workload::placed`]: iterations of [`placed_scan`]`::<P>`.
+fn placed_run<'a, const P: usize>(mut scan: impl FnMut() + 'a) -> Run<'a> {
+    Box::new(move |iters| {
+        let start = Instant::now();
+        for _ in 0..iters {
+            placed_scan::<P>(&mut scan);
+        }
+        start.elapsed()
+    })
+}
+
+/// One iteration of a per-instance loop at placement `P`: the loop of `scan` (inlined here)
+/// moved by [`shift_code`], as [`step_loop`] moves a step's loop.
+#[inline(never)]
+fn placed_scan<const P: usize>(scan: &mut impl FnMut()) {
+    shift_code::<P>();
+    scan();
 }
 
 /// `P` × 16 bytes of one-byte `nop`s before the loop that follows, run once per iteration
@@ -713,14 +764,20 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
         ($name:literal, $new:expr, $pts:expr, |$t:ident, $input:ident, $pt:ident, $now:ident| $call:expr) => {{
             let mut timers = vec![$new; BANK];
             let mut k = 0u64;
-            Workload::plain($name, 1, 1e-3, move || {
-                k += 1;
-                let $now = scan_time(k);
-                let inputs: &[bool; BANK] = &scans[k as usize % SCANS];
-                for (($t, &$input), &$pt) in timers.iter_mut().zip(inputs).zip($pts) {
-                    black_box($call);
-                }
-            })
+            Workload::placed(
+                $name,
+                1,
+                1e-3,
+                #[inline(always)]
+                move || {
+                    k += 1;
+                    let $now = scan_time(k);
+                    let inputs: &[bool; BANK] = &scans[k as usize % SCANS];
+                    for (($t, &$input), &$pt) in timers.iter_mut().zip(inputs).zip($pts) {
+                        black_box($call);
+                    }
+                },
+            )
         }};
     }
     let mut bank = Box::new(TonBank::<BANK>::new());
@@ -846,17 +903,23 @@ fn loop_iec<const K: usize>(c: &mut Criterion, family: Family) {
         ($name:literal, $new:expr) => {{
             let mut timers = vec![$new; BANK];
             let mut k = 0u64;
-            Workload::plain($name, 1, 1e-3, move || {
-                k += 1;
-                let now = CpuTime::from_millis(scan_time(k));
-                let s = k as usize % SCANS;
-                let lanes = timers.iter_mut().zip(&scans[s]).zip(&resets[s]).zip(pt);
-                for (((t, &input), &reset), &pt) in lanes {
-                    // The kind a constant at the call, as in a PLC program.
-                    let input = IecInput::new(input, pt).with_reset(reset);
-                    black_box(t.call(IecKind::ALL[K], now, input));
-                }
-            })
+            Workload::placed(
+                $name,
+                1,
+                1e-3,
+                #[inline(always)]
+                move || {
+                    k += 1;
+                    let now = CpuTime::from_millis(scan_time(k));
+                    let s = k as usize % SCANS;
+                    let lanes = timers.iter_mut().zip(&scans[s]).zip(&resets[s]).zip(pt);
+                    for (((t, &input), &reset), &pt) in lanes {
+                        // The kind a constant at the call, as in a PLC program.
+                        let input = IecInput::new(input, pt).with_reset(reset);
+                        black_box(t.call(IecKind::ALL[K], now, input));
+                    }
+                },
+            )
         }};
     }
     let ws = vec![
@@ -886,20 +949,26 @@ fn loop_ctd(c: &mut Criterion, family: Family) {
         ($name:literal, $new:expr, |$t:ident, $input:ident| $call:expr) => {{
             let mut counters = vec![$new; BANK];
             let mut k = 0usize;
-            Workload::plain($name, 1, 1e-3, move || {
-                k += 1;
-                let s = &scans[k % scans.len()];
-                for (i, $t) in counters.iter_mut().enumerate() {
-                    let $input = CounterInput {
-                        cu: s[0][i],
-                        cd: s[1][i],
-                        r: s[2][i],
-                        ld: s[3][i],
-                        pv,
-                    };
-                    black_box($call);
-                }
-            })
+            Workload::placed(
+                $name,
+                1,
+                1e-3,
+                #[inline(always)]
+                move || {
+                    k += 1;
+                    let s = &scans[k % scans.len()];
+                    for (i, $t) in counters.iter_mut().enumerate() {
+                        let $input = CounterInput {
+                            cu: s[0][i],
+                            cd: s[1][i],
+                            r: s[2][i],
+                            ld: s[3][i],
+                            pv,
+                        };
+                        black_box($call);
+                    }
+                },
+            )
         }};
     }
     let mut ws = vec![
@@ -982,13 +1051,19 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
         ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {{
             let mut counters = vec![$new; BANK];
             let mut k = 0usize;
-            Workload::plain($name, 1, 1e-3, move || {
-                k += 1;
-                let $s = &scans[k % scans.len()];
-                for ($i, $t) in counters.iter_mut().enumerate() {
-                    black_box($call);
-                }
-            })
+            Workload::placed(
+                $name,
+                1,
+                1e-3,
+                #[inline(always)]
+                move || {
+                    k += 1;
+                    let $s = &scans[k % scans.len()];
+                    for ($i, $t) in counters.iter_mut().enumerate() {
+                        black_box($call);
+                    }
+                },
+            )
         }};
     }
     let mut ws = vec![
@@ -1404,6 +1479,18 @@ fn summary(family: Family, tally: &mut Tally) {
     }
     println!();
     println!(
+        "Each per-instance form above (a loop calling one instance at a time, compiled into the \
+         benchmark) is the mean of the loop's {PLACEMENTS} placements; the fastest and the \
+         slowest placement, µs:"
+    );
+    println!();
+    for (group, reference, _, forms) in bulk {
+        let forms = std::iter::once(reference).chain(forms.iter().copied());
+        let forms = forms.map(|name| (name, name));
+        print_spreads(&format!("{fam}: {group}/"), group, forms);
+    }
+    println!();
+    println!(
         "Per-instance loops (issue 41), µs per scan: a plain `for` over 10 048 instances \
          calling `call`, as a runtime compiles `FOR i := ... DO block[i](...)`:"
     );
@@ -1428,6 +1515,17 @@ fn summary(family: Family, tally: &mut Tally) {
             ratio_x(r, a),
             verdict(ok),
         );
+    }
+    println!();
+    println!(
+        "Each figure above is the mean of the loop's {PLACEMENTS} placements (`PLACEMENTS`); \
+         the fastest and the slowest placement, µs:"
+    );
+    println!();
+    for (block, group, reference, _) in per_instance_loops() {
+        let call = LOOP_CALL[usize::from(reference == COUNTER_REF)];
+        let forms = [(reference, "reference"), (call, "call")];
+        print_spreads(&format!("{fam}: {group}/"), block, forms);
     }
     println!();
     println!("Goals of issue 29, family `{fam}` (the single steps: the table above):");
@@ -1549,6 +1647,25 @@ fn per_instance_loops() -> Vec<(&'static str, String, &'static str, Option<&'sta
         ("CTD", loop_group("CTD"), COUNTER_REF, call_array),
         ("CTUD", CTUD_BANK.to_owned(), COUNTER_REF, call_array),
     ]
+}
+
+/// One line `- {label}: {form} {fastest}-{slowest}, ...`: the placements of each workload
+/// `prefix` + `name` of `forms` (`(name, form)`) that was timed at several; nothing if none was.
+fn print_spreads<'n>(
+    prefix: &str,
+    label: &str,
+    forms: impl IntoIterator<Item = (&'n str, &'n str)>,
+) {
+    let spreads = SPREADS.lock().expect("no panic while holding the lock");
+    let forms: Vec<String> = (forms.into_iter())
+        .filter_map(|(name, form)| {
+            let (lo, hi) = spreads.get(&format!("{prefix}{name}"))?;
+            Some(format!("{form} {lo:.2}-{hi:.2}"))
+        })
+        .collect();
+    if !forms.is_empty() {
+        println!("- {label}: {}", forms.join(", "));
+    }
 }
 
 fn ratio_x(a: Option<f64>, b: Option<f64>) -> String {
