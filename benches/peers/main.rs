@@ -241,6 +241,29 @@ impl<'a> Workload<'a> {
     }
 }
 
+/// A per-instance loop over [`BANK`] instances made from `new`, timed at the [`PLACEMENTS`]
+/// ([`Workload::placed`]): scan `k` (1, 2, ...) runs `scan(instances, k)`, the loop over the
+/// instances as a runtime compiles `FOR i := ... DO block[i](...)`. Callers mark `scan`
+/// `#[inline(always)]`, so that the loop is compiled into each placement's function.
+fn per_instance_scans<'a, T: Clone + 'a>(
+    name: &str,
+    new: T,
+    mut scan: impl FnMut(&mut [T], u64) + Clone + 'a,
+) -> Workload<'a> {
+    let mut instances = vec![new; BANK];
+    let mut k = 0u64;
+    Workload::placed(
+        name,
+        1,
+        1e-3,
+        #[inline(always)]
+        move || {
+            k += 1;
+            scan(&mut instances, k);
+        },
+    )
+}
+
 /// The summary figure of each workload (`group/name`): its fastest interleaved round, the mean
 /// over its placements.
 static RESULTS: Mutex<BTreeMap<String, f64>> = Mutex::new(BTreeMap::new());
@@ -761,16 +784,12 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
     /// to `black_box`. The inputs are walked in step with the timers (one zip), so that the
     /// loop costs every form the same few instructions.
     macro_rules! per_instance {
-        ($name:literal, $new:expr, $pts:expr, |$t:ident, $input:ident, $pt:ident, $now:ident| $call:expr) => {{
-            let mut timers = vec![$new; BANK];
-            let mut k = 0u64;
-            Workload::placed(
+        ($name:literal, $new:expr, $pts:expr, |$t:ident, $input:ident, $pt:ident, $now:ident| $call:expr) => {
+            per_instance_scans(
                 $name,
-                1,
-                1e-3,
+                $new,
                 #[inline(always)]
-                move || {
-                    k += 1;
+                move |timers, k| {
                     let $now = scan_time(k);
                     let inputs: &[bool; BANK] = &scans[k as usize % SCANS];
                     for (($t, &$input), &$pt) in timers.iter_mut().zip(inputs).zip($pts) {
@@ -778,7 +797,7 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
                     }
                 },
             )
-        }};
+        };
     }
     let mut bank = Box::new(TonBank::<BANK>::new());
     let mut k = 0u64;
@@ -900,16 +919,12 @@ fn loop_iec<const K: usize>(c: &mut Criterion, family: Family) {
         .collect();
     let resets = &resets;
     macro_rules! per_instance {
-        ($name:literal, $new:expr) => {{
-            let mut timers = vec![$new; BANK];
-            let mut k = 0u64;
-            Workload::placed(
+        ($name:literal, $new:expr) => {
+            per_instance_scans(
                 $name,
-                1,
-                1e-3,
+                $new,
                 #[inline(always)]
-                move || {
-                    k += 1;
+                move |timers, k| {
                     let now = CpuTime::from_millis(scan_time(k));
                     let s = k as usize % SCANS;
                     let lanes = timers.iter_mut().zip(&scans[s]).zip(&resets[s]).zip(pt);
@@ -920,7 +935,7 @@ fn loop_iec<const K: usize>(c: &mut Criterion, family: Family) {
                     }
                 },
             )
-        }};
+        };
     }
     let ws = vec![
         per_instance!("reference (IecTimerRef array)", IecTimerRef::<u32>::new()),
@@ -946,17 +961,13 @@ fn loop_ctd(c: &mut Criterion, family: Family) {
     let scans = &scans;
     let pv: i16 = 100;
     macro_rules! per_instance {
-        ($name:literal, $new:expr, |$t:ident, $input:ident| $call:expr) => {{
-            let mut counters = vec![$new; BANK];
-            let mut k = 0usize;
-            Workload::placed(
+        ($name:literal, $new:expr, |$t:ident, $input:ident| $call:expr) => {
+            per_instance_scans(
                 $name,
-                1,
-                1e-3,
+                $new,
                 #[inline(always)]
-                move || {
-                    k += 1;
-                    let s = &scans[k % scans.len()];
+                move |counters, k| {
+                    let s = &scans[k as usize % scans.len()];
                     for (i, $t) in counters.iter_mut().enumerate() {
                         let $input = CounterInput {
                             cu: s[0][i],
@@ -969,7 +980,7 @@ fn loop_ctd(c: &mut Criterion, family: Family) {
                     }
                 },
             )
-        }};
+        };
     }
     let mut ws = vec![
         per_instance!(
@@ -1048,23 +1059,19 @@ fn bulk_counters<const UP_ONLY: bool>(c: &mut Criterion, family: Family) {
     }
     let group = if up_only { CTU_BANK } else { CTUD_BANK };
     macro_rules! per_instance {
-        ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {{
-            let mut counters = vec![$new; BANK];
-            let mut k = 0usize;
-            Workload::placed(
+        ($name:literal, $new:expr, |$t:ident, $s:ident, $i:ident| $call:expr) => {
+            per_instance_scans(
                 $name,
-                1,
-                1e-3,
+                $new,
                 #[inline(always)]
-                move || {
-                    k += 1;
-                    let $s = &scans[k % scans.len()];
+                move |counters, k| {
+                    let $s = &scans[k as usize % scans.len()];
                     for ($i, $t) in counters.iter_mut().enumerate() {
                         black_box($call);
                     }
                 },
             )
-        }};
+        };
     }
     let mut ws = vec![
         per_instance!(
