@@ -11,7 +11,7 @@ use plc_timers::counter::{
     Counter, CounterInput, CounterInt, CounterKind, CounterOps, CounterOutput, CounterRef,
 };
 
-struct Both<T> {
+struct Both<T: CounterInt> {
     kind: CounterKind,
     reference: CounterRef<T>,
     optimized: Counter<T>,

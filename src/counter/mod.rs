@@ -43,7 +43,15 @@ use core::fmt::Debug;
 /// assert_eq!(i16::MAX.saturating_inc(), i16::MAX); // never wraps
 /// ```
 pub trait CounterInt:
-    Copy + Ord + Debug + core::fmt::Display + Default + Send + Sync + 'static
+    packed::sealed::CounterBytes
+    + Copy
+    + Ord
+    + Debug
+    + core::fmt::Display
+    + Default
+    + Send
+    + Sync
+    + 'static
 {
     /// The type's name in the manual (`INT`, `UDINT`, …).
     const NAME: &'static str;

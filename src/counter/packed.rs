@@ -9,19 +9,119 @@ use super::{
 const CU_PREV: u8 = 1;
 const CD_PREV: u8 = 2;
 
-/// One IEC counter: CV and a byte of edge memories.
+/// One IEC counter: CV and a byte of edge memories, in `2 * size_of::<T>()` bytes.
+///
+/// The bytes are laid out so that a counter reads as one unsigned word of twice `T`'s width
+/// (little-endian): the edge byte in the low byte, CV in the upper half, the bytes between
+/// them 0. [`CounterOps::call`] reads and writes CV and the edge byte apart, as two fields;
+/// [`Counter::call_array`] reads and writes each counter as one word, which the compiler
+/// vectorizes over an array of counters (from a `{ cv, edges }` structure with a padding byte
+/// it moved the fields one counter at a time, which took two thirds of that loop's
+/// instructions on SSE2, issue 41). The alignment is 1 (the bytes are an array).
 ///
 /// ```
 /// use plc_timers::counter::{Counter, CounterInput, CounterKind, CounterOps};
 /// let mut ctud = Counter::<i16>::new();
 /// let both = CounterInput { cu: true, cd: true, pv: 5, ..Default::default() };
 /// assert_eq!(ctud.call(CounterKind::Ctud, both).cv, 0); // simultaneous edges cancel
+/// assert_eq!(size_of::<Counter<i16>>(), 4);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[repr(C)]
-pub struct Counter<T> {
-    cv: T,
-    edges: u8,
+#[derive(Clone, Copy, PartialEq, Eq)]
+#[repr(transparent)]
+pub struct Counter<T: CounterInt> {
+    bytes: <T as sealed::CounterBytes>::Bytes,
+}
+
+/// The storage of [`Counter`], one implementation per [`CounterInt`] type (sealed: the trait
+/// is public in a module no other crate can name).
+pub(super) mod sealed {
+    /// How a [`super::Counter`] of this type keeps CV and the edge byte in
+    /// `2 * size_of::<Self>()` bytes: byte 0 the edges, CV little-endian in the upper half,
+    /// the bytes between them 0; read little-endian, the bytes are the word
+    /// `CV << Self::BITS | edges` ([`CounterBytes::Word`]) on every target.
+    pub trait CounterBytes: Sized {
+        /// `[u8; 2 * size_of::<Self>()]`.
+        type Bytes: Copy + Eq + Send + Sync + 'static;
+        /// The unsigned integer of twice `Self`'s width.
+        type Word: Copy;
+        /// A new counter's bytes: CV 0, no edge seen.
+        const NEW: Self::Bytes;
+        /// CV, read alone.
+        fn cv(bytes: &Self::Bytes) -> Self;
+        /// The edge byte, read alone.
+        fn edges(bytes: &Self::Bytes) -> u8;
+        /// CV and the edge byte, written apart (the bytes between them stay 0).
+        fn set(bytes: &mut Self::Bytes, cv: Self, edges: u8);
+        /// The bytes as one word.
+        fn word(bytes: &Self::Bytes) -> Self::Word;
+        /// CV of a word.
+        fn word_cv(word: Self::Word) -> Self;
+        /// The edge byte of a word.
+        fn word_edges(word: Self::Word) -> u8;
+        /// The bytes of `cv` and `edges`, written as one word.
+        fn to_bytes(cv: Self, edges: u8) -> Self::Bytes;
+    }
+
+    macro_rules! counter_bytes {
+        ($($t:ty => $word:ty),*) => {$(
+            impl CounterBytes for $t {
+                type Bytes = [u8; 2 * size_of::<$t>()];
+                type Word = $word;
+                const NEW: Self::Bytes = [0; 2 * size_of::<$t>()];
+                #[inline(always)]
+                fn cv(bytes: &Self::Bytes) -> $t {
+                    <$t>::from_le_bytes(core::array::from_fn(|i| bytes[size_of::<$t>() + i]))
+                }
+                #[inline(always)]
+                fn edges(bytes: &Self::Bytes) -> u8 {
+                    bytes[0]
+                }
+                #[inline(always)]
+                fn set(bytes: &mut Self::Bytes, cv: $t, edges: u8) {
+                    bytes[0] = edges;
+                    bytes[size_of::<$t>()..].copy_from_slice(&cv.to_le_bytes());
+                }
+                #[inline(always)]
+                fn word(bytes: &Self::Bytes) -> $word {
+                    <$word>::from_le_bytes(*bytes)
+                }
+                #[inline(always)]
+                fn word_cv(word: $word) -> $t {
+                    (word >> <$t>::BITS) as $t
+                }
+                #[inline(always)]
+                fn word_edges(word: $word) -> u8 {
+                    word as u8
+                }
+                #[inline(always)]
+                fn to_bytes(cv: $t, edges: u8) -> Self::Bytes {
+                    // `cv as $word` sign-extends a signed CV; the shift drops those bits.
+                    ((cv as $word) << <$t>::BITS | <$word>::from(edges)).to_le_bytes()
+                }
+            }
+        )*};
+    }
+
+    counter_bytes!(i8 => u16, u8 => u16, i16 => u32, u16 => u32, i32 => u64, u32 => u64,
+        i64 => u128, u64 => u128);
+}
+
+impl<T: CounterInt> Default for Counter<T> {
+    /// A new counter.
+    fn default() -> Counter<T> {
+        Counter::new()
+    }
+}
+
+impl<T: CounterInt> core::fmt::Debug for Counter<T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let state = CounterOps::state(self);
+        f.debug_struct("Counter")
+            .field("cv", &state.cv)
+            .field("cu_prev", &state.cu_prev)
+            .field("cd_prev", &state.cd_prev)
+            .finish()
+    }
 }
 
 /// CU and CD as the bits of the `edges` byte.
@@ -39,10 +139,7 @@ impl<T: CounterInt> Counter<T> {
     /// assert_eq!(Counter::<u64>::new().state().cv, 0);
     /// ```
     pub const fn new() -> Counter<T> {
-        Counter {
-            cv: T::ZERO,
-            edges: 0,
-        }
+        Counter { bytes: T::NEW }
     }
 
     /// The counter holding `state` (every state is representable).
@@ -53,16 +150,15 @@ impl<T: CounterInt> Counter<T> {
     /// let down = CounterInput { cd: true, pv: 0, ..Default::default() };
     /// assert_eq!(c.call(CounterKind::Ctd, down).cv, 0); // USINT stays at its minimum
     /// ```
-    pub const fn from_state(state: CounterState<T>) -> Counter<T> {
+    pub fn from_state(state: CounterState<T>) -> Counter<T> {
         Counter {
-            cv: state.cv,
-            edges: edge_bits(state.cu_prev, state.cd_prev),
+            bytes: T::to_bytes(state.cv, edge_bits(state.cu_prev, state.cd_prev)),
         }
     }
 
     /// `CV`.
-    pub const fn cv(&self) -> T {
-        self.cv
+    pub fn cv(&self) -> T {
+        T::cv(&self.bytes)
     }
 
     /// The call `call(kind, input)` for a loop over an array of counters: the same outputs
@@ -97,7 +193,7 @@ impl<T: CounterInt> Counter<T> {
         input: CounterInput<T>,
     ) -> CounterOutput<T> {
         let (cu, cd, r, ld) = masked_inputs(kind, &input);
-        let (mut cv, mut edges) = ([self.cv], [self.edges]);
+        let (mut cv, mut edges) = ([T::cv(&self.bytes)], [T::edges(&self.bytes)]);
         ctud_lanes(
             &mut cv,
             &mut edges,
@@ -105,9 +201,8 @@ impl<T: CounterInt> Counter<T> {
             HAS_ALL,
             &[input.pv],
         );
-        [self.cv] = cv;
-        [self.edges] = edges;
-        outputs(self.cv, input.pv)
+        T::set(&mut self.bytes, cv[0], edges[0]);
+        outputs(cv[0], input.pv)
     }
 }
 
@@ -163,7 +258,7 @@ pub struct ArrayOutputs<'a, T, const N: usize> {
 }
 
 /// [`Counter::call_array`] as a loop for [`crate::simd::run`].
-struct CallArray<'a, 'b, 'c, T, const N: usize> {
+struct CallArray<'a, 'b, 'c, T: CounterInt, const N: usize> {
     counters: &'a mut [Counter<T>; N],
     kind: CounterKind,
     inputs: &'a BankInputs<'b, N>,
@@ -277,14 +372,13 @@ fn call_array_lanes<T: CounterInt, const N: usize>(
 /// parameters that are `&mut` are known not to overlap anything else (LLVM's `noalias`, kept
 /// when inlined), which lets the compiler keep the arrays' addresses in registers and
 /// vectorize the stores (read through the kernel's structure, they were reloaded after every
-/// store). CV and the edge bytes are moved into arrays of their own (structure of arrays,
-/// which the lane loop vectorizes as the bank's does; the loop straight over the structures
-/// was not vectorized, and 3x slower), the lane code run on each counter, and the results moved
-/// back. One counter at a time here (`L` = 1 in a loop of 16, which LLVM vectorizes over the
-/// 16), not the two passes over the group that [`super::CounterBank::scan`] takes: on SSE2 the
-/// two passes made this loop slower (CTD 10.64 µs, 1.80x faster than the reference's loop,
-/// against 9.71 µs, 1.97x, one counter at a time; `benches/peers`, one build each), its time
-/// going into moving the counters' fields, which LLVM does one counter at a time either way.
+/// store). Each counter is read as one word ([`Counter`]'s layout), taken apart into CV and
+/// the edge byte (structure of arrays), the group run through the lane code in its two passes,
+/// as [`super::CounterBank::scan`] runs it, and each counter written back as one word. With
+/// the `{ cv, edges }` structure of before, whose fields LLVM moved one counter at a time,
+/// CTD's loop took 9.71 µs on SSE2 (1.97x faster than the reference's); with the words and
+/// the lane code one counter at a time 3.84 µs, in two passes 3.08 (6.2x; CTUD 3.28 against
+/// 4.84, CTU 2.40 against 2.17; `benches/peers`, one build each, issue 41).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn counter_group<T: CounterInt>(
@@ -296,21 +390,12 @@ fn counter_group<T: CounterInt>(
     qd: &mut [bool; LANES],
     cv_out: &mut [T; LANES],
 ) {
-    let mut cv: [T; LANES] = core::array::from_fn(|j| counters[j].cv);
-    let mut edges: [u8; LANES] = core::array::from_fn(|j| counters[j].edges);
+    let words: [T::Word; LANES] = core::array::from_fn(|j| T::word(&counters[j].bytes));
+    let mut cv: [T; LANES] = core::array::from_fn(|j| T::word_cv(words[j]));
+    let mut edges: [u8; LANES] = core::array::from_fn(|j| T::word_edges(words[j]));
+    ctud_lanes(&mut cv, &mut edges, [cu, cd, r, ld], has, pv);
     for j in 0..LANES {
-        let (cv, edges) = (
-            core::array::from_mut(&mut cv[j]),
-            core::array::from_mut(&mut edges[j]),
-        );
-        let ins = [&cu[j], &cd[j], &r[j], &ld[j]].map(core::array::from_ref);
-        ctud_lanes(cv, edges, ins, has, core::array::from_ref(&pv[j]));
-    }
-    for j in 0..LANES {
-        counters[j] = Counter {
-            cv: cv[j],
-            edges: edges[j],
-        };
+        counters[j].bytes = T::to_bytes(cv[j], edges[j]);
         let o = outputs(cv[j], pv[j]);
         qu[j] = o.qu;
         qd[j] = o.qd;
@@ -409,10 +494,10 @@ impl<T: CounterInt> CounterOps<T> for Counter<T> {
         let (cu, cd, r, ld) = masked_inputs(kind, &input);
         // Both members are read before either is written: a read of the whole struct after a
         // write of one byte of it would wait for that write to reach the cache.
-        let (v, e) = (self.cv, self.edges);
+        let (v, e) = (T::cv(&self.bytes), T::edges(&self.bytes));
         let up = cu & (e & CU_PREV == 0);
         let down = cd & (e & CD_PREV == 0);
-        self.edges = edge_bits(cu, cd);
+        let edges = edge_bits(cu, cd);
         let cv = match kind {
             CounterKind::Ctu | CounterKind::Ctd => {
                 let stepped = select(up, v.saturating_inc(), v.saturating_dec());
@@ -435,16 +520,93 @@ impl<T: CounterInt> CounterOps<T> for Counter<T> {
                 }
             }
         };
-        self.cv = cv;
+        T::set(&mut self.bytes, cv, edges);
         outputs(cv, input.pv)
     }
 
     /// The abstraction function.
     fn state(&self) -> CounterState<T> {
         CounterState {
-            cv: self.cv,
-            cu_prev: self.edges & CU_PREV != 0,
-            cd_prev: self.edges & CD_PREV != 0,
+            cv: T::cv(&self.bytes),
+            cu_prev: T::edges(&self.bytes) & CU_PREV != 0,
+            cd_prev: T::edges(&self.bytes) & CD_PREV != 0,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::format;
+
+    /// The two ways in and out of a counter's bytes agree for every type, at CV's limits and
+    /// around 0, with each edge byte a counter holds: the fields apart (`set`, `cv`, `edges`:
+    /// `call`) and the word (`to_bytes`, `word_cv`, `word_edges`: `call_array`), and the
+    /// bytes between them stay 0, so that `==` on counters is equality of their states.
+    fn storage_round_trips<T: CounterInt>(values: [T; 5]) {
+        for cv in values {
+            for edges in 0..4u8 {
+                let whole = T::to_bytes(cv, edges);
+                let mut apart = T::NEW;
+                T::set(&mut apart, cv, edges);
+                assert!(
+                    whole == apart,
+                    "{} CV {cv} edges {edges}: set != to_bytes",
+                    T::NAME
+                );
+                assert_eq!(
+                    (T::cv(&whole), T::edges(&whole)),
+                    (cv, edges),
+                    "{}",
+                    T::NAME
+                );
+                let word = T::word(&whole);
+                assert_eq!(
+                    (T::word_cv(word), T::word_edges(word)),
+                    (cv, edges),
+                    "{}",
+                    T::NAME
+                );
+                let state = CounterState {
+                    cv,
+                    cu_prev: edges & CU_PREV != 0,
+                    cd_prev: edges & CD_PREV != 0,
+                };
+                assert_eq!(Counter::from_state(state).state(), state, "{}", T::NAME);
+                for other in values {
+                    let (a, b) = (
+                        Counter::from_state(state),
+                        Counter::from_state(CounterState { cv: other, ..state }),
+                    );
+                    assert_eq!(a == b, cv == other, "{} CV {cv} and {other}", T::NAME);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn storage_of_every_type() {
+        storage_round_trips([i8::MIN, -1, 0, 1, i8::MAX]);
+        storage_round_trips([i16::MIN, -1, 0, 1, i16::MAX]);
+        storage_round_trips([i32::MIN, -1, 0, 1, i32::MAX]);
+        storage_round_trips([i64::MIN, -1, 0, 1, i64::MAX]);
+        storage_round_trips([0, 1, 2, u8::MAX - 1, u8::MAX]);
+        storage_round_trips([0, 1, 2, u16::MAX - 1, u16::MAX]);
+        storage_round_trips([0, 1, 2, u32::MAX - 1, u32::MAX]);
+        storage_round_trips([0, 1, 2, u64::MAX - 1, u64::MAX]);
+    }
+
+    #[test]
+    fn debug_shows_the_state() {
+        let c = Counter::from_state(CounterState {
+            cv: -7i16,
+            cu_prev: true,
+            cd_prev: false,
+        });
+        assert_eq!(
+            format!("{c:?}"),
+            "Counter { cv: -7, cu_prev: true, cd_prev: false }"
+        );
     }
 }
