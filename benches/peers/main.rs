@@ -174,6 +174,17 @@ peer_int!(i16, i32, i64);
 // took. Criterion runs each one for its own report; then the summary pass runs the workloads of
 // each group in turn, round after round, and keeps each one's fastest round.
 
+/// The routine that runs `iteration` `iters` times and returns the time they took.
+fn timed<'a>(mut iteration: impl FnMut() + 'a) -> Run<'a> {
+    Box::new(move |iters| {
+        let start = Instant::now();
+        for _ in 0..iters {
+            iteration();
+        }
+        start.elapsed()
+    })
+}
+
 /// A routine that runs `iters` iterations of a workload and returns the time they took.
 type Run<'a> = Box<dyn FnMut(u64) -> Duration + 'a>;
 
@@ -191,18 +202,12 @@ struct Workload<'a> {
 
 impl<'a> Workload<'a> {
     /// A workload whose iteration is `routine`, timed as a whole.
-    fn plain(name: &str, units: usize, scale: f64, mut routine: impl FnMut() + 'a) -> Self {
+    fn plain(name: &str, units: usize, scale: f64, routine: impl FnMut() + 'a) -> Self {
         Workload {
             name: name.to_owned(),
             units: units as f64,
             scale,
-            runs: vec![Box::new(move |iters| {
-                let start = Instant::now();
-                for _ in 0..iters {
-                    routine();
-                }
-                start.elapsed()
-            })],
+            runs: vec![timed(routine)],
         }
     }
 
@@ -468,13 +473,9 @@ impl Stream {
     ) -> Run<'a> {
         let mut instances: [Instance<T>; INSTANCES] = core::array::from_fn(|_| Instance(new()));
         let mut base = 0;
-        Box::new(move |iters| {
-            let start = Instant::now();
-            for _ in 0..iters {
-                step_loop::<P, T, O>(self, &mut instances, base, &mut step);
-                base += self.span;
-            }
-            start.elapsed()
+        timed(move || {
+            step_loop::<P, T, O>(self, &mut instances, base, &mut step);
+            base += self.span;
         })
     }
 }
@@ -524,13 +525,7 @@ fn step_loop<const P: usize, T, O>(
 
 /// The routine of placement `P` of a [`Workload::placed`]: iterations of [`placed_scan`]`::<P>`.
 fn placed_run<'a, const P: usize>(mut scan: impl FnMut() + 'a) -> Run<'a> {
-    Box::new(move |iters| {
-        let start = Instant::now();
-        for _ in 0..iters {
-            placed_scan::<P>(&mut scan);
-        }
-        start.elapsed()
-    })
+    timed(move || placed_scan::<P>(&mut scan))
 }
 
 /// One iteration of a per-instance loop at placement `P`: the loop of `scan` (inlined here)
@@ -890,18 +885,14 @@ fn bulk_ton(c: &mut Criterion, family: Family) {
                     let anchor = &raw const *bank as usize;
                     let pt = PlacedCopy::new(pt, anchor, p * 4096 / DATA_PLACEMENTS);
                     let mut k = 0u64;
-                    Box::new(move |iters| {
-                        let start = Instant::now();
-                        for _ in 0..iters {
-                            k += 1;
-                            bank.scan(
-                                CpuTime::from_millis(scan_time(k)),
-                                &scans[k as usize % SCANS],
-                                pt.array(),
-                            );
-                            black_box(&mut bank);
-                        }
-                        start.elapsed()
+                    timed(move || {
+                        k += 1;
+                        bank.scan(
+                            CpuTime::from_millis(scan_time(k)),
+                            &scans[k as usize % SCANS],
+                            pt.array(),
+                        );
+                        black_box(&mut bank);
                     })
                 })
                 .collect(),

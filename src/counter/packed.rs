@@ -526,10 +526,11 @@ impl<T: CounterInt> CounterOps<T> for Counter<T> {
 
     /// The abstraction function.
     fn state(&self) -> CounterState<T> {
+        let edges = T::edges(&self.bytes);
         CounterState {
             cv: T::cv(&self.bytes),
-            cu_prev: T::edges(&self.bytes) & CU_PREV != 0,
-            cd_prev: T::edges(&self.bytes) & CD_PREV != 0,
+            cu_prev: edges & CU_PREV != 0,
+            cd_prev: edges & CD_PREV != 0,
         }
     }
 }
