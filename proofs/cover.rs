@@ -9,8 +9,9 @@
 //! `#[covers]` (proofs/macros; without it `cover!` does not compile), which declares all its
 //! covers when the function is entered, taken branches or not; each evaluation then records
 //! whether the condition held. Every Kani harness runs its body inside [`harness`], which fails
-//! with the messages of the covers its runs declared but never satisfied, and prints how often
-//! each was satisfied. The concrete drivers run their bodies inside [`check_covers`] or
+//! with the messages of the covers its runs declared but never satisfied (running the body
+//! again with fresh random inputs while one is unsatisfied, up to [`HARNESS_ROUNDS`] times), and
+//! prints how often each was satisfied. The concrete drivers run their bodies inside [`check_covers`] or
 //! [`check_ids`] (or collect per worker thread with [`collect`] and merge with [`merge`]), which
 //! fail the same way. So a premise that no case of a harness or driver reaches fails it instead
 //! of passing vacuously. (What `cargo test` cannot see: a cover in a function that the
@@ -283,32 +284,86 @@ pub fn require(hits: Hits) -> Hits {
     hits
 }
 
+/// How many times [`harness`] runs a body whose runs leave a cover unsatisfied.
+#[cfg(not(kani))]
+pub const HARNESS_ROUNDS: u32 = 16;
+
+#[cfg(not(kani))]
+thread_local! {
+    // The requirement IDs that drivers' `check_ids` inside the open harness leave to it (None:
+    // no harness is open on this thread).
+    static HARNESS_IDS: RefCell<Option<BTreeSet<String>>> = const { RefCell::new(None) };
+}
+
+/// Inside a [`harness`], leaves the check that `ids` were reached to the harness (which judges
+/// all its rounds together) and returns true; outside one, returns false.
+#[cfg(not(kani))]
+fn leave_to_harness(ids: &[&str]) -> bool {
+    HARNESS_IDS.with(|h| match h.borrow_mut().as_mut() {
+        Some(open) => {
+            open.extend(ids.iter().map(|id| id.to_string()));
+            true
+        }
+        None => false,
+    })
+}
+
 /// The body of the Kani harness `name` (`module::function`, as .ci/kani-harnesses lists it):
 /// runs `body`, prints each cover it declared with how often it was satisfied and evaluated
 /// (seen with `--nocapture`), and fails with the messages of those never satisfied, as the
 /// harness's Kani job would.
+///
+/// A cover is existential: Kani finds it satisfied when some execution of the harness
+/// satisfies it. Under `cargo test` a run of a body samples its executions (bolero's random
+/// inputs), and a cover whose premise is rare can go unsatisfied in one run of a few thousand
+/// inputs (IEC-WRAP-01's "the clock wrapped since START" on TONR: in about 1 run of 16 at
+/// bolero's 2 000 inputs). So while a cover is unsatisfied, the harness runs its body again
+/// with fresh inputs, up to [`HARNESS_ROUNDS`] runs, and fails only when none of them satisfied
+/// it; every assertion of every run must hold. A cover that no input reaches fails after the
+/// last run. The same holds for the requirement IDs of a driver's `check_ids` inside the body:
+/// they count over all the runs.
 #[cfg(not(kani))]
-pub fn harness<R>(name: &str, body: impl FnOnce() -> R) -> R {
+pub fn harness<R>(name: &str, mut body: impl FnMut() -> R) -> R {
     // `module_path!()` of the test crate starts with its name.
     let name = name.strip_prefix("proofs::").unwrap_or(name);
-    let (r, hits) = collect(body);
-    println!("{}", table(name, &hits));
-    let missed: Vec<&str> = hits
-        .covers
-        .iter()
-        .filter(|(_, &n)| n == 0)
-        .map(|(m, _)| *m)
-        .collect();
-    assert!(
-        missed.is_empty(),
-        "harness {name}: covers never satisfied: {missed:#?}"
-    );
-    r
+    let mut total = Hits::default();
+    let mut ids = BTreeSet::new();
+    let mut round = 0;
+    loop {
+        round += 1;
+        let outer = HARNESS_IDS.with(|h| h.replace(Some(BTreeSet::new())));
+        let (r, hits) = collect(&mut body);
+        let left = HARNESS_IDS.with(|h| h.replace(outer)).unwrap_or_default();
+        ids.extend(left);
+        add(&mut total, &hits);
+        let missed: Vec<&str> = total
+            .covers
+            .iter()
+            .filter(|(_, &n)| n == 0)
+            .map(|(m, _)| *m)
+            .collect();
+        let unchecked = ids.iter().any(|id| !total.checked.contains(id.as_str()));
+        if (missed.is_empty() && !unchecked) || round == HARNESS_ROUNDS {
+            let runs = if round == 1 {
+                String::new()
+            } else {
+                format!(" ({round} runs of the body)")
+            };
+            println!("{}{runs}", table(name, &total));
+            assert!(
+                missed.is_empty(),
+                "harness {name}: covers never satisfied: {missed:#?} ({round} runs of the body)"
+            );
+            let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
+            require_checked(&ids, &total);
+            return r;
+        }
+    }
 }
 
 /// Runs `body` (under Kani the harness is the proof: nothing is recorded).
 #[cfg(kani)]
-pub fn harness<R>(_name: &str, body: impl FnOnce() -> R) -> R {
+pub fn harness<R>(_name: &str, mut body: impl FnMut() -> R) -> R {
     body()
 }
 
@@ -353,6 +408,10 @@ pub fn check_covers<R>(body: impl FnOnce() -> R) -> R {
 #[cfg(not(kani))]
 pub fn check_ids<R>(ids: &[&str], body: impl FnOnce() -> R) -> R {
     let (r, hits) = collect(body);
+    // In a harness, its covers and these IDs count over all the runs of its body.
+    if leave_to_harness(ids) {
+        return r;
+    }
     require_checked(ids, &hits);
     if !hits.covers.is_empty() {
         require(hits);
@@ -390,7 +449,7 @@ pub fn check_only<R>(ids: &[&str], body: impl FnOnce() -> R) -> R {
 /// harness runs in its own scope.
 #[cfg(all(test, not(kani)))]
 mod tests {
-    use super::{collect, covers, harness, table};
+    use super::{check_ids, collect, covers, harness, table, HARNESS_ROUNDS};
 
     /// A body with a cover per branch, as a harness body that branches on its inputs.
     #[covers]
@@ -454,6 +513,71 @@ mod tests {
             let ((), inner) = collect(|| by_kind(3));
             assert_eq!(inner.covers.len(), 3, "the inner scope has its own records");
         });
+    }
+
+    /// A cover that one run of a random body misses and a later run satisfies: the harness
+    /// runs the body again until it is, and passes.
+    #[test]
+    fn a_cover_satisfied_in_a_later_run_passes_its_harness() {
+        let mut runs = 0;
+        harness("test::later", || {
+            runs += 1;
+            // Kinds 0 and 1 in every run, a kind above 5 from the third run on.
+            [0, 1, if runs >= 3 { 7 } else { 2 }]
+                .into_iter()
+                .for_each(by_kind);
+        });
+        assert_eq!(
+            runs, 3,
+            "the harness stops at the first run that satisfies every cover"
+        );
+    }
+
+    /// A cover that no run satisfies fails the harness after [`HARNESS_ROUNDS`] runs.
+    #[test]
+    fn a_cover_never_true_fails_after_the_last_run() {
+        let mut runs = 0;
+        let failed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            harness("test::never_true_rounds", || {
+                runs += 1;
+                (0..=5).for_each(by_kind);
+            })
+        }));
+        assert!(failed.is_err(), "a cover never true fails the harness");
+        assert_eq!(runs, HARNESS_ROUNDS);
+    }
+
+    /// A driver's `check_ids` inside a harness: its IDs count over the harness's runs, and
+    /// one never reached in any run fails the harness.
+    #[test]
+    fn a_nested_drivers_ids_count_over_the_runs() {
+        let mut runs = 0;
+        harness("test::nested_ids", || {
+            runs += 1;
+            by_kind(if runs >= 2 { 7 } else { 0 });
+            by_kind(1);
+            by_kind(0);
+            check_ids(&["TEST-ID-01"], || {
+                if runs >= 2 {
+                    check!(runs >= 2, "TEST-ID-01: reached from the second run on");
+                }
+            });
+        });
+        assert_eq!(runs, 2);
+        let failed = std::panic::catch_unwind(|| {
+            harness("test::nested_ids_never", || {
+                (0..=7).for_each(by_kind);
+                check_ids(&["TEST-ID-02"], || ());
+            })
+        });
+        let message = failed.expect_err("an ID never reached fails the harness");
+        let message = message
+            .downcast_ref::<String>()
+            .expect("a formatted panic message");
+        assert!(
+            message.contains("never reached: [\"TEST-ID-02\"]"),
+            "{message}"
+        );
     }
 
     /// Every function marked as a Kani harness in proofs/ runs its body in [`harness`], first
