@@ -111,6 +111,18 @@ pub struct Hits {
 }
 
 #[cfg(not(kani))]
+impl Hits {
+    /// The covers declared or evaluated but never satisfied.
+    pub fn unsatisfied(&self) -> Vec<&'static str> {
+        self.covers
+            .iter()
+            .filter(|(_, &n)| n == 0)
+            .map(|(m, _)| *m)
+            .collect()
+    }
+}
+
+#[cfg(not(kani))]
 thread_local! {
     static HITS: RefCell<Option<Hits>> = const { RefCell::new(None) };
     // The collection this thread records into (0: none). Unique per `collect` call, so that an
@@ -274,12 +286,7 @@ pub fn merge(all: impl IntoIterator<Item = Hits>) -> Hits {
 #[cfg(not(kani))]
 pub fn require(hits: Hits) -> Hits {
     assert!(!hits.covers.is_empty(), "no cover was evaluated");
-    let missed: Vec<&str> = hits
-        .covers
-        .iter()
-        .filter(|(_, &n)| n == 0)
-        .map(|(m, _)| *m)
-        .collect();
+    let missed = hits.unsatisfied();
     assert!(missed.is_empty(), "covers never hit: {missed:#?}");
     hits
 }
@@ -336,12 +343,7 @@ pub fn harness<R>(name: &str, mut body: impl FnMut() -> R) -> R {
         let left = HARNESS_IDS.with(|h| h.replace(outer)).unwrap_or_default();
         ids.extend(left);
         add(&mut total, &hits);
-        let missed: Vec<&str> = total
-            .covers
-            .iter()
-            .filter(|(_, &n)| n == 0)
-            .map(|(m, _)| *m)
-            .collect();
+        let missed = total.unsatisfied();
         let unchecked = ids.iter().any(|id| !total.checked.contains(id.as_str()));
         if (missed.is_empty() && !unchecked) || round == HARNESS_ROUNDS {
             let runs = if round == 1 {
