@@ -146,7 +146,7 @@ def test_ltime_literals() -> None:
 
 
 @given(ns=st.integers(-(2**63), 2**63 - 1))
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 def test_ltime_round_trips(ns: int) -> None:
     t = LTime.from_nanos(ns)
     assert LTime.parse(str(t)) == t, f"LTIME-LIT-01: {t} back to {ns}"

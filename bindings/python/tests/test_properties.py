@@ -136,7 +136,7 @@ literal_text = st.one_of(
 )
 
 
-@settings(max_examples=600, deadline=None)
+@settings(max_examples=600, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(text=literal_text)
 def test_parsers_raise_literal_errors_only(text: str) -> None:
     for parse in (plc_timers.S5Time.parse, plc_timers.Time.parse, plc_timers.CounterPreset.parse):
@@ -153,7 +153,7 @@ anything = st.one_of(
 )
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(block=st.sampled_from(S5_TIMERS + IEC_TIMERS + IEC_COUNTERS + S5_COUNTERS),
        arg=anything, when=anything)
 def test_bad_arguments_raise_never_crash(block: Callable[..., Any], arg: Any, when: Any) -> None:
@@ -167,7 +167,7 @@ def test_bad_arguments_raise_never_crash(block: Callable[..., Any], arg: Any, wh
         pass
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     block=st.sampled_from(["TON", "S_ODT", "CTUD", "S_CUD", "nope"]),
     rows=st.lists(st.dictionaries(st.sampled_from(["t_ms", "IN", "S", "CU", "PV", "TV", "Q", "x"]),
