@@ -6,16 +6,16 @@
 //! satisfied (one in a branch the harness never takes is unreachable, so it fails too).
 //!
 //! Under `cargo test` the same is counted per harness. Every function holding a `cover!` carries
-//! `#[covers]` (proofs/macros; without it `cover!` does not compile), which declares all its
-//! covers when the function is entered, taken branches or not; each evaluation then records
-//! whether the condition held. Every Kani harness runs its body inside [`harness`], which fails
-//! with the messages of the covers its runs declared but never satisfied (running the body
-//! again with fresh random inputs while one is unsatisfied, up to [`HARNESS_ROUNDS`] times), and
-//! prints how often each was satisfied. The concrete drivers run their bodies inside [`check_covers`] or
+//! `#[covers]` (proofs/macros; without it `cover!` does not compile), which declares all its covers
+//! when the function is entered, taken branches or not; each evaluation then records whether the
+//! condition held. Every Kani harness runs its body inside [`harness`], which fails with the
+//! messages of the covers its runs declared but never satisfied (running the body again with fresh
+//! random inputs while one is unsatisfied, up to [`HARNESS_ROUNDS`] times), and prints how often
+//! each was satisfied. The concrete drivers run their bodies inside [`check_covers`] or
 //! [`check_ids`] (or collect per worker thread with [`collect`] and merge with [`merge`]), which
-//! fail the same way. So a premise that no case of a harness or driver reaches fails it instead
-//! of passing vacuously. (What `cargo test` cannot see: a cover in a function that the
-//! harness could call but its runs never enter; Kani counts that one too.)
+//! fail the same way. So a premise that no case of a harness or driver reaches fails it instead of
+//! passing vacuously. (What `cargo test` cannot see: a cover in a function that the harness could
+//! call but its runs never enter; Kani counts that one too.)
 //!
 //! `check!(condition, "ID: message", ..)` and `check_eq!(a, b, "ID: message", ..)` are
 //! `assert!` and `assert_eq!` that also record, under `cargo test`, the requirement IDs their
